@@ -1,0 +1,40 @@
+#include "BallastAbrasionEngine.hpp"
+
+#include <algorithm>
+#include <string>
+
+#include "HertzPressure.hpp"
+#include "InputCheck.hpp"
+
+namespace ballast {
+
+void AbrasionParameters::validate() const
+{
+	requirePositive("strength", strength);
+	requireNonNegative("rMin", rMin);
+}
+
+void evaluateAbrasion(const AbrasionParameters& p, long n, const double* radii, long nContacts, const long* grain1,
+                      const long* grain2, const double* Fn, const double* R1, const double* R2, const double* uN,
+                      double* p0max, std::uint8_t* abrade)
+{
+	p.validate();
+	for (long g = 0; g < n; ++g) {
+		requirePositive("radii[" + std::to_string(g) + "]", radii[g]);
+		p0max[g] = 0;
+	}
+	for (long c = 0; c < nContacts; ++c) {
+		for (long gi : {grain1[c], grain2[c]})
+			if (gi < -1 || gi >= n)
+				throw ArgumentError("grain index of contact " + std::to_string(c) + ": expected -1 or 0 <= index < "
+				                    + std::to_string(n) + ", got " + std::to_string(gi));
+		if (grain1[c] < 0 && grain2[c] < 0) continue;
+		const double p0 = hertzPressure(Fn[c], R1[c], R2[c], uN[c]);  // eq. 7
+		if (grain1[c] >= 0) p0max[grain1[c]] = std::max(p0max[grain1[c]], p0);
+		if (grain2[c] >= 0) p0max[grain2[c]] = std::max(p0max[grain2[c]], p0);
+	}
+	for (long g = 0; g < n; ++g)
+		abrade[g] = radii[g] >= p.rMin && p0max[g] > p.strength;  // eq. 6
+}
+
+}  // namespace ballast

@@ -1,0 +1,51 @@
+#include "FabricStress.hpp"
+
+#include <cmath>
+
+#include "InputCheck.hpp"
+
+namespace ballast {
+
+double sphereVolume(double r)
+{
+	requirePositive("radius", r);
+	return 4.0 / 3.0 * M_PI * r * r * r;
+}
+
+Mat3 fabricStress(double r, const std::vector<Vec3>& branches, const std::vector<Vec3>& forces)
+{
+	if (branches.size() != forces.size())
+		throw ArgumentError("forces: expected as many forces as branches (" + std::to_string(branches.size()) + "), got "
+		                    + std::to_string(forces.size()));
+	const double V = sphereVolume(r);
+	Mat3         s = Mat3::Zero();
+	for (size_t c = 0; c < branches.size(); ++c)
+		s += branches[c] * forces[c].transpose();  // l_i F_j
+	return s / V;
+}
+
+void fabricStressMany(int nGrains, const double* radii, int nContacts, const long* grainOf, const double* branches,
+                      const double* forces, double* out)
+{
+	if (nGrains < 0) throw ArgumentError("nGrains: expected >= 0, got " + std::to_string(nGrains));
+	for (int g = 0; g < nGrains; ++g)
+		requirePositive("radii[" + std::to_string(g) + "]", radii[g]);
+	for (int c = 0; c < nContacts; ++c)
+		if (grainOf[c] < 0 || grainOf[c] >= nGrains)
+			throw ArgumentError("grainIndex[" + std::to_string(c) + "]: expected 0 <= index < " + std::to_string(nGrains)
+			                    + ", got " + std::to_string(grainOf[c]));
+	Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, 9, Eigen::RowMajor>> S(out, nGrains, 9);
+	S.setZero();
+	for (int c = 0; c < nContacts; ++c) {
+		const double* l = branches + 3 * c;
+		const double* f = forces + 3 * c;
+		double*       s = out + 9 * grainOf[c];
+		for (int i = 0; i < 3; ++i)
+			for (int j = 0; j < 3; ++j)
+				s[3 * i + j] += l[i] * f[j];
+	}
+	for (int g = 0; g < nGrains; ++g)
+		S.row(g) /= sphereVolume(radii[g]);
+}
+
+}  // namespace ballast

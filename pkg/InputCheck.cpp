@@ -1,0 +1,36 @@
+#include "InputCheck.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+namespace ballast {
+
+std::string formatValue(double v)
+{
+	char buf[40];
+	std::snprintf(buf, sizeof buf, "%.17g", v);
+	// shortest representation that reads back to the same double
+	for (int prec = 1; prec <= 17; ++prec) {
+		char b[40];
+		std::snprintf(b, sizeof b, "%.*g", prec, v);
+		if (std::strtod(b, nullptr) == v || std::isnan(v)) return b;
+	}
+	return buf;
+}
+
+void requireFinite(const std::string& name, double v)
+{
+	if (!std::isfinite(v)) throw ArgumentError(name + ": expected a finite number, got " + formatValue(v));
+}
+
+void requirePositive(const std::string& name, double v)
+{
+	if (!std::isfinite(v) || v <= 0) throw ArgumentError(name + ": expected a finite number > 0, got " + formatValue(v));
+}
+
+void requireNonNegative(const std::string& name, double v)
+{
+	if (!std::isfinite(v) || v < 0) throw ArgumentError(name + ": expected a finite number >= 0, got " + formatValue(v));
+}
+
+}  // namespace ballast

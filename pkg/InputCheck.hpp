@@ -1,0 +1,21 @@
+// Argument checks shared by the core: every error names the argument, the value and what is allowed.
+#pragma once
+#include <stdexcept>
+#include <string>
+
+namespace ballast {
+
+// Thrown for a bad argument; the Python binding turns it into ValueError.
+class ArgumentError : public std::invalid_argument {
+public:
+	explicit ArgumentError(const std::string& what) : std::invalid_argument(what) {}
+};
+
+// Formats a double the way Python prints it (shortest round-trip).
+std::string formatValue(double v);
+
+void requireFinite(const std::string& name, double v);
+void requirePositive(const std::string& name, double v);     // finite and > 0
+void requireNonNegative(const std::string& name, double v);  // finite and >= 0
+
+}  // namespace ballast

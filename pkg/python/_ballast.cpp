@@ -1,0 +1,394 @@
+// Python binding `ballast._ballast` of the C++ core (Boost.Python + Boost.Python NumPy).
+// Arrays in, arrays out: every loop over grains or contacts runs here, never in Python.
+// Bad input raises TypeError (wrong type, dtype or shape) or ValueError (bad value) naming the argument.
+#include <boost/python.hpp>
+#include <boost/python/numpy.hpp>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "../BallastAbrasionEngine.hpp"
+#include "../BallastCrushEngine.hpp"
+#include "../FabricStress.hpp"
+#include "../FragmentPattern.hpp"
+#include "../HertzPressure.hpp"
+#include "../InputCheck.hpp"
+#include "../Strength.hpp"
+#include "../VonMises.hpp"
+
+namespace bp = boost::python;
+namespace np = boost::python::numpy;
+using namespace ballast;
+
+namespace {
+
+struct TypeError : std::runtime_error {
+	explicit TypeError(const std::string& w) : std::runtime_error(w) {}
+};
+
+std::string pyStr(const bp::object& o) { return bp::extract<std::string>(bp::str(o)); }
+
+std::string shapeOf(const np::ndarray& a)
+{
+	std::string s = "(";
+	for (int i = 0; i < a.get_nd(); ++i)
+		s += std::to_string(a.shape(i)) + (a.get_nd() == 1 || i + 1 < a.get_nd() ? "," : "");
+	return s + ")";
+}
+
+// Converts obj to a C-contiguous array of dtype (float64 or int64), accepting only the dtype kinds given.
+np::ndarray asArray(const bp::object& obj, const std::string& name, const char* kinds, const np::dtype& dt)
+{
+	bp::object numpy = bp::import("numpy");
+	bp::object arr;
+	try {
+		arr = numpy.attr("asarray")(obj);
+	} catch (const bp::error_already_set&) {
+		PyErr_Clear();
+		throw TypeError(name + ": expected an array of numbers, got " + pyStr(obj.attr("__class__").attr("__name__")));
+	}
+	const std::string kind = bp::extract<std::string>(arr.attr("dtype").attr("kind"));
+	if (kind.size() != 1 || std::string(kinds).find(kind[0]) == std::string::npos)
+		throw TypeError(name + ": expected " + (std::string(kinds) == "iu" ? "integers" : "real numbers") + ", got dtype "
+		                + pyStr(arr.attr("dtype")));
+	bp::object c = numpy.attr("require")(arr, dt, "C");  // ascontiguousarray would turn 0-d into 1-d
+	return bp::extract<np::ndarray>(c);
+}
+
+np::ndarray asDoubles(const bp::object& obj, const std::string& name)
+{
+	np::ndarray a = asArray(obj, name, "iuf", np::dtype::get_builtin<double>());
+	const long  n = bp::len(a.attr("ravel")());
+	const auto* p = reinterpret_cast<const double*>(a.get_data());
+	for (long i = 0; i < n; ++i)
+		if (!std::isfinite(p[i]))
+			throw ArgumentError(name + ": expected finite numbers, got " + formatValue(p[i]) + " at flat index " + std::to_string(i));
+	return a;
+}
+
+np::ndarray asIndices(const bp::object& obj, const std::string& name)
+{
+	return asArray(obj, name, "iu", np::dtype::get_builtin<long>());
+}
+
+// Checks the shape; -1 in want is any length. Returns the first dimension.
+long requireShape(const np::ndarray& a, const std::string& name, const std::vector<long>& want, const std::string& what)
+{
+	bool ok = a.get_nd() == (int)want.size();
+	for (int i = 0; ok && i < a.get_nd(); ++i)
+		ok = want[i] < 0 || a.shape(i) == want[i];
+	if (!ok) throw TypeError(name + ": expected " + what + ", got shape " + shapeOf(a));
+	return want.empty() ? 1 : a.shape(0);
+}
+
+const double* dptr(const np::ndarray& a) { return reinterpret_cast<const double*>(a.get_data()); }
+const long*   lptr(const np::ndarray& a) { return reinterpret_cast<const long*>(a.get_data()); }
+
+np::ndarray emptyDoubles(std::vector<long> shape)
+{
+	std::vector<Py_intptr_t> s(shape.begin(), shape.end());
+	return np::zeros(s.size(), s.data(), np::dtype::get_builtin<double>());
+}
+double* wptr(np::ndarray& a) { return reinterpret_cast<double*>(a.get_data()); }
+
+double asScalar(const bp::object& obj, const std::string& name)
+{
+	np::ndarray a = asDoubles(obj, name);
+	if (a.get_nd() != 0) throw TypeError(name + ": expected a number, got an array of shape " + shapeOf(a));
+	return *dptr(a);
+}
+
+// ---------------------------------------------------------------- eq. 3
+np::ndarray py_fabricStress(const bp::object& radius, const bp::object& branches, const bp::object& forces)
+{
+	const double r = asScalar(radius, "radius");
+	requirePositive("radius", r);
+	np::ndarray  l  = asDoubles(branches, "branches");
+	np::ndarray  f  = asDoubles(forces, "forces");
+	const long   nl = requireShape(l, "branches", {-1, 3}, "an (n,3) array");
+	const long   nf = requireShape(f, "forces", {-1, 3}, "an (n,3) array");
+	if (nl != nf) throw TypeError("forces: expected as many rows as branches (" + std::to_string(nl) + "), got " + std::to_string(nf));
+	std::vector<long> zero(nl, 0);
+	np::ndarray       out = emptyDoubles({3, 3});
+	fabricStressMany(1, &r, nl, zero.data(), dptr(l), dptr(f), wptr(out));
+	return out;
+}
+
+np::ndarray py_grainStresses(const bp::object& radii, const bp::object& grainIndex, const bp::object& branches, const bp::object& forces)
+{
+	np::ndarray r  = asDoubles(radii, "radii");
+	const long  n  = requireShape(r, "radii", {-1}, "a 1-d array");
+	np::ndarray gi = asIndices(grainIndex, "grainIndex");
+	const long  m  = requireShape(gi, "grainIndex", {-1}, "a 1-d array");
+	np::ndarray l  = asDoubles(branches, "branches");
+	np::ndarray f  = asDoubles(forces, "forces");
+	requireShape(l, "branches", {m, 3}, "an (" + std::to_string(m) + ",3) array, one row per grainIndex");
+	requireShape(f, "forces", {m, 3}, "an (" + std::to_string(m) + ",3) array, one row per grainIndex");
+	np::ndarray out = emptyDoubles({n, 3, 3});
+	fabricStressMany(n, dptr(r), m, lptr(gi), dptr(l), dptr(f), wptr(out));
+	return out;
+}
+
+// ---------------------------------------------------------------- eq. 2
+bp::object py_vonMises(const bp::object& sigma)
+{
+	np::ndarray s = asDoubles(sigma, "sigma");
+	if (s.get_nd() == 2) {
+		requireShape(s, "sigma", {3, 3}, "a (3,3) or (N,3,3) array");
+		return bp::object(vonMises(Eigen::Map<const Mat3>(dptr(s))));
+	}
+	const long  n   = requireShape(s, "sigma", {-1, 3, 3}, "a (3,3) or (N,3,3) array");
+	np::ndarray out = emptyDoubles({n});
+	for (long i = 0; i < n; ++i)
+		wptr(out)[i] = vonMises(Eigen::Map<const Mat3>(dptr(s) + 9 * i));
+	return out;
+}
+
+np::ndarray py_principalStresses(const bp::object& sigma)
+{
+	np::ndarray s = asDoubles(sigma, "sigma");
+	const bool  one = s.get_nd() == 2;
+	const long  n   = one ? (requireShape(s, "sigma", {3, 3}, "a (3,3) or (N,3,3) array"), 1L)
+	                      : requireShape(s, "sigma", {-1, 3, 3}, "a (3,3) or (N,3,3) array");
+	np::ndarray out = one ? emptyDoubles({3}) : emptyDoubles({n, 3});
+	for (long i = 0; i < n; ++i) {
+		// row-major storage read as column-major is the transpose: same symmetric part
+		const Vec3 p = principalStresses(Eigen::Map<const Mat3>(dptr(s) + 9 * i));
+		for (int k = 0; k < 3; ++k)
+			wptr(out)[3 * i + k] = p[k];
+	}
+	return out;
+}
+
+// ---------------------------------------------------------------- eq. 4, eq. 7: scalars or arrays
+// Broadcasts the arguments like NumPy; returns a float when all are scalars.
+bp::object elementwise(const std::vector<std::pair<std::string, bp::object>>& args, double (*fn)(const double*))
+{
+	std::vector<np::ndarray> a;
+	bool                     allScalar = true;
+	bp::list                 objs;
+	for (const auto& kv : args) {
+		a.push_back(asDoubles(kv.second, kv.first));
+		allScalar = allScalar && a.back().get_nd() == 0;
+		objs.append(a.back());
+	}
+	bp::object numpy = bp::import("numpy");
+	bp::object b;
+	try {
+		b = numpy.attr("broadcast_arrays")(*bp::tuple(objs));
+	} catch (const bp::error_already_set&) {
+		PyErr_Clear();
+		std::string names, shapes;
+		for (size_t i = 0; i < a.size(); ++i) {
+			names += (i ? ", " : "") + args[i].first;
+			shapes += (i ? ", " : "") + shapeOf(a[i]);
+		}
+		throw TypeError(names + ": expected scalars or arrays of equal length, got shapes " + shapes);
+	}
+	std::vector<np::ndarray> c;
+	for (size_t i = 0; i < a.size(); ++i)
+		c.push_back(bp::extract<np::ndarray>(numpy.attr("ascontiguousarray")(bp::object(b[i]), "float64")));
+	const long n = bp::len(c[0].attr("ravel")());
+	np::ndarray out = bp::extract<np::ndarray>(numpy.attr("zeros")(bp::object(c[0].attr("shape")), "float64"));
+	std::vector<double> x(a.size());
+	for (long k = 0; k < n; ++k) {
+		for (size_t i = 0; i < c.size(); ++i)
+			x[i] = dptr(c[i])[k];
+		wptr(out)[k] = fn(x.data());
+	}
+	if (allScalar) return bp::object(wptr(out)[0]);
+	return out;
+}
+
+bp::object py_hertzPressure(const bp::object& Fn, const bp::object& R1, const bp::object& R2, const bp::object& uN)
+{
+	return elementwise({{"Fn", Fn}, {"R1", R1}, {"R2", R2}, {"uN", uN}},
+	                   [](const double* x) { return hertzPressure(x[0], x[1], x[2], x[3]); });
+}
+
+bp::object py_effectiveRadius(const bp::object& R1, const bp::object& R2)
+{
+	return elementwise({{"R1", R1}, {"R2", R2}}, [](const double* x) { return effectiveRadius(x[0], x[1]); });
+}
+
+bp::object py_sizeStrength(const bp::object& ft0, const bp::object& r, const bp::object& m)
+{
+	return elementwise({{"ft0", ft0}, {"radius", r}, {"m", m}}, [](const double* x) { return sizeStrength(x[0], x[1], x[2]); });
+}
+
+// ---------------------------------------------------------------- snapshot decisions
+bp::tuple py_crushCheck(const bp::object& stresses, const bp::object& radii, double ft0, double m, double rMin)
+{
+	CrushParameters p{ft0, m, rMin};
+	p.validate();
+	np::ndarray s = asDoubles(stresses, "stresses");
+	np::ndarray r = asDoubles(radii, "radii");
+	const long  n = requireShape(r, "radii", {-1}, "a 1-d array");
+	requireShape(s, "stresses", {n, 3, 3}, "an (" + std::to_string(n) + ",3,3) array, one tensor per radius");
+	np::ndarray               sigmaE = emptyDoubles({n}), ft = emptyDoubles({n});
+	std::vector<std::uint8_t> crush(n);
+	evaluateCrushing(p, n, dptr(s), dptr(r), wptr(sigmaE), wptr(ft), crush.data());
+	np::ndarray flag = np::zeros(bp::make_tuple(n), np::dtype::get_builtin<bool>());
+	std::copy(crush.begin(), crush.end(), reinterpret_cast<bool*>(flag.get_data()));
+	return bp::make_tuple(sigmaE, ft, flag);
+}
+
+bp::tuple py_abrasionCheck(const bp::object& radii, const bp::object& grain1, const bp::object& grain2, const bp::object& Fn,
+                           const bp::object& R1, const bp::object& R2, const bp::object& uN, double strength, double rMin)
+{
+	AbrasionParameters p{strength, rMin};
+	p.validate();
+	np::ndarray r = asDoubles(radii, "radii");
+	const long  n = requireShape(r, "radii", {-1}, "a 1-d array");
+	np::ndarray g1 = asIndices(grain1, "grain1");
+	const long  m  = requireShape(g1, "grain1", {-1}, "a 1-d array");
+	std::vector<np::ndarray> c;
+	const char*              names[] = {"grain2", "Fn", "R1", "R2", "uN"};
+	const bp::object*        objs[]  = {&grain2, &Fn, &R1, &R2, &uN};
+	for (int i = 0; i < 5; ++i) {
+		c.push_back(i == 0 ? asIndices(*objs[i], names[i]) : asDoubles(*objs[i], names[i]));
+		requireShape(c.back(), names[i], {m}, "a 1-d array of length " + std::to_string(m) + ", like grain1");
+	}
+	np::ndarray               p0 = emptyDoubles({n});
+	std::vector<std::uint8_t> ab(n);
+	evaluateAbrasion(p, n, dptr(r), m, lptr(g1), lptr(c[0]), dptr(c[1]), dptr(c[2]), dptr(c[3]), dptr(c[4]), wptr(p0), ab.data());
+	np::ndarray flag = np::zeros(bp::make_tuple(n), np::dtype::get_builtin<bool>());
+	std::copy(ab.begin(), ab.end(), reinterpret_cast<bool*>(flag.get_data()));
+	return bp::make_tuple(p0, flag);
+}
+
+// ---------------------------------------------------------------- fragments (Fig. 1)
+Layout toLayout(const bp::object& pattern)
+{
+	bp::extract<std::string> asStr(pattern);
+	if (asStr.check()) return layoutFromName(asStr());
+	if (PyBool_Check(pattern.ptr()) || !PyLong_Check(pattern.ptr()))
+		throw TypeError("pattern: expected 4, 6, 14 or one of 'tetra4', 'planar4', 'octa6', 'fill14', got "
+		                + pyStr(bp::object(pattern.attr("__repr__")())));
+	return layoutFromCount(bp::extract<long>(pattern));
+}
+
+np::ndarray spheresToArray(const std::vector<Sphere4>& v)
+{
+	np::ndarray out = emptyDoubles({(long)v.size(), 4});
+	for (size_t i = 0; i < v.size(); ++i)
+		for (int k = 0; k < 4; ++k)
+			wptr(out)[4 * i + k] = v[i][k];
+	return out;
+}
+
+np::ndarray matToArray(const Mat3& m)
+{
+	np::ndarray out = emptyDoubles({3, 3});
+	for (int i = 0; i < 3; ++i)
+		for (int j = 0; j < 3; ++j)
+			wptr(out)[3 * i + j] = m(i, j);
+	return out;
+}
+
+np::ndarray py_fragmentPattern(const bp::object& pattern) { return spheresToArray(fragmentPattern(toLayout(pattern))); }
+double      py_keptVolumeFraction(const bp::object& pattern) { return keptVolumeFraction(toLayout(pattern)); }
+std::string py_patternName(const bp::object& pattern) { return layoutName(toLayout(pattern)); }
+
+std::uint64_t asSeed(const bp::object& o, const std::string& name)
+{
+	if (PyBool_Check(o.ptr()) || !PyLong_Check(o.ptr())) throw TypeError(name + ": expected an integer >= 0, got " + pyStr(o.attr("__repr__")()));
+	const long long v = bp::extract<long long>(o);
+	if (v < 0) throw ArgumentError(name + ": expected an integer >= 0, got " + std::to_string(v));
+	return (std::uint64_t)v;
+}
+
+np::ndarray py_randomRotation(const bp::object& seed, const bp::object& counter)
+{
+	return matToArray(randomRotation(asSeed(seed, "seed"), asSeed(counter, "counter")));
+}
+
+np::ndarray py_placeFragments(const bp::object& pattern, const bp::object& centre, const bp::object& radius, const bp::object& seed,
+                              const bp::object& counter)
+{
+	const Layout layout = toLayout(pattern);
+	np::ndarray  c      = asDoubles(centre, "centre");
+	requireShape(c, "centre", {3}, "a 3-vector");
+	const double r = asScalar(radius, "radius");
+	requirePositive("radius", r);
+	return spheresToArray(placeFragments(layout, Vec3(dptr(c)[0], dptr(c)[1], dptr(c)[2]), r,
+	                                     randomRotation(asSeed(seed, "seed"), asSeed(counter, "counter"))));
+}
+
+// ---------------------------------------------------------------- harvesting from YADE
+// utils.bodyStressTensors() returns a list of minieigen Matrix3. YADE registers that class with the
+// same libboost_python, so the C++ matrix is read in place; anything else goes through numpy.
+np::ndarray py_matricesToArray(const bp::object& seq)
+{
+	const long  n   = bp::len(seq);
+	np::ndarray out = emptyDoubles({n, 3, 3});
+	double*     o   = wptr(out);
+	for (long i = 0; i < n; ++i) {
+		bp::object                        item = seq[i];
+		bp::extract<const Eigen::Matrix3d&> m(item);
+		if (m.check()) {
+			const Eigen::Matrix3d& M = m();
+			for (int a = 0; a < 3; ++a)
+				for (int b = 0; b < 3; ++b)
+					o[9 * i + 3 * a + b] = M(a, b);
+		} else {
+			np::ndarray a = asDoubles(item, "matrices[" + std::to_string(i) + "]");
+			requireShape(a, "matrices[" + std::to_string(i) + "]", {3, 3}, "a 3x3 matrix");
+			std::copy(dptr(a), dptr(a) + 9, o + 9 * i);
+		}
+	}
+	return out;
+}
+
+bool py_fastMatrixPath(const bp::object& item) { return bp::extract<const Eigen::Matrix3d&>(item).check(); }
+
+void translateArgument(const ArgumentError& e) { PyErr_SetString(PyExc_ValueError, e.what()); }
+void translateType(const TypeError& e) { PyErr_SetString(PyExc_TypeError, e.what()); }
+
+}  // namespace
+
+BOOST_PYTHON_MODULE(_ballast)
+{
+	np::initialize();
+	bp::register_exception_translator<ArgumentError>(&translateArgument);
+	bp::register_exception_translator<TypeError>(&translateType);
+	bp::scope().attr("__doc__") = "C++ core of the crushable-ballast model (Dubina & Elias). See the ballast package.";
+
+	bp::def("fabricStress", py_fabricStress, (bp::arg("radius"), "branches", "forces"),
+	        "Fabric (Love-Weber) stress of one grain, eq. 3 [Pa]: (1/V) sum_c l^c (x) F^c, V = 4/3 pi r^3.\n"
+	        "radius [m] > 0; branches (n,3) [m] from the grain centre to each contact point; forces (n,3) [N] acting on the grain.\n"
+	        "Returns a (3,3) array, compression negative.");
+	bp::def("grainStresses", py_grainStresses, (bp::arg("radii"), "grainIndex", "branches", "forces"),
+	        "Eq. 3 for many grains from flat contact arrays: radii (N,) [m]; grainIndex (M,) integers in [0,N);\n"
+	        "branches (M,3) [m]; forces (M,3) [N]. Returns (N,3,3) [Pa].");
+	bp::def("vonMises", py_vonMises, (bp::arg("sigma")),
+	        "Von Mises stress, eq. 2 [Pa], of the symmetric part of sigma: (3,3) -> float, (N,3,3) -> (N,).");
+	bp::def("principalStresses", py_principalStresses, (bp::arg("sigma")),
+	        "Principal stresses of the symmetric part, sorted sI >= sII >= sIII [Pa]: (3,3) -> (3,), (N,3,3) -> (N,3).");
+	bp::def("hertzPressure", py_hertzPressure, (bp::arg("Fn"), "R1", "R2", "uN"),
+	        "Maximum Hertz pressure, eq. 7 [Pa]: p0 = 3 Fn / (2 pi R uN), R = R1 R2 / (R1 + R2).\n"
+	        "Fn [N], R1, R2 [m], uN overlap [m]; scalars or arrays (broadcast). A radius of 0 is a flat wall\n"
+	        "(R2 = 0 gives R = R1). No compression (Fn <= 0 or uN <= 0) gives 0.");
+	bp::def("effectiveRadius", py_effectiveRadius, (bp::arg("R1"), "R2"), "R1 R2 / (R1 + R2) [m]; 0 is a wall.");
+	bp::def("sizeStrength", py_sizeStrength, (bp::arg("ft0"), "radius", bp::arg("m") = 1.0),
+	        "Size-dependent strength, eq. 4 [Pa]: ft0 / r^m; ft0 [Pa m^m], radius [m], m [-] (paper: 1).");
+	bp::def("crushCheck", py_crushCheck, (bp::arg("stresses"), "radii", "ft0", "m", "rMin"),
+	        "Crushing decision for all grains (eq. 1): stresses (N,3,3) [Pa], radii (N,) [m].\n"
+	        "Returns (sigmaE (N,) [Pa], strength (N,) [Pa], crush (N,) bool); grains with r < rMin never crush.");
+	bp::def("abrasionCheck", py_abrasionCheck, (bp::arg("radii"), "grain1", "grain2", "Fn", "R1", "R2", "uN", "strength", "rMin"),
+	        "Abrasion decision for all grains (eq. 6 with eq. 7): radii (N,) [m]; per contact (M,): grain1, grain2 the grain\n"
+	        "index of each side or -1, Fn [N], R1, R2 [m] (0 = wall), uN [m]; strength [Pa]; rMin [m].\n"
+	        "Returns (p0max (N,) [Pa], abrade (N,) bool).");
+	bp::def("fragmentPattern", py_fragmentPattern, (bp::arg("pattern")),
+	        "Fragments of a unit parent at the origin as an (n,4) array [x,y,z,r]: pattern 4 (tetra4), 6 (octa6),\n"
+	        "14 (fill14), or the names 'tetra4', 'planar4', 'octa6', 'fill14'.");
+	bp::def("keptVolumeFraction", py_keptVolumeFraction, (bp::arg("pattern")), "Fragment volume / parent volume [-].");
+	bp::def("patternName", py_patternName, (bp::arg("pattern")), "Canonical name of a pattern ('tetra4', ...).");
+	bp::def("randomRotation", py_randomRotation, (bp::arg("seed"), "counter"),
+	        "Uniform random rotation matrix (3,3), the same for the same (seed, counter) on every platform.");
+	bp::def("placeFragments", py_placeFragments, (bp::arg("pattern"), "centre", "radius", "seed", "counter"),
+	        "Fragments of a parent of the given radius [m] and centre [m], randomly rotated by (seed, counter): (n,4).");
+	bp::def("matricesToArray", py_matricesToArray, (bp::arg("matrices")),
+	        "A sequence of 3x3 matrices (e.g. utils.bodyStressTensors()) as an (N,3,3) array, read in C++.");
+	bp::def("_fastMatrixPath", py_fastMatrixPath, (bp::arg("item")), "True if item is read in place as a C++ Eigen matrix.");
+}

@@ -1,0 +1,314 @@
+"""YADE engines of the crushable-ballast model (Dubina & Eliáš, sections 2 and 3).
+
+Both engines are Python subclasses of YADE's ``PyRunner``, a C++ ``PeriodicEngine``: they sit in
+``O.engines`` (after ``NewtonIntegrator``) and ``iterPeriod``, ``virtPeriod`` (the paper's crushing
+period T_c), ``realPeriod``, ``nDo``, ``initRun``, ``dead`` and ``label`` behave as for any YADE
+engine. At each check the engine harvests the scene (see :mod:`ballast.harvest`), decides for all
+grains at once in C++ (``ballast.crushCheck`` / ``ballast.abrasionCheck``) and applies the result.
+
+Persistence: ``O.save()`` keeps only PyRunner's own fields. Each engine therefore keeps its
+parameters and outputs as JSON in ``O.tags['ballast.<key>']`` and its ``command`` names that key.
+After ``O.load()`` the engine is a plain PyRunner until it fires: then, or at once when you call
+:func:`restore`, it is replaced by a full engine with the saved parameters, counters and events,
+and its label points to it again.
+"""
+import builtins
+import json
+import math
+import time
+import uuid
+
+import numpy as np
+from yade import O, utils
+from yade import Vector3
+from yade.wrapper import PyRunner
+
+from . import _ballast, harvest
+from .params import (Param, anyInt, boolean, docTable, intNonNegative, nonNegative, openUnit, pattern,
+                     positive, validate)
+
+# PyRunner's (PeriodicEngine's) own settings, passed through unchanged.
+_PERIODIC = ('iterPeriod', 'virtPeriod', 'realPeriod', 'nDo', 'initRun', 'dead', 'label', 'firstIterRun',
+             'ompThreads')
+_PERIODIC_STATE = ('iterLast', 'virtLast', 'realLast', 'nDone')
+_TAG = 'ballast.'
+_COMMAND = "import ballast.engines as _be; _be._fire(%r)"
+
+_live = {}      # key -> engine instance created in this process
+_classes = {}   # class name -> class, for restoring
+
+
+def _common():
+    return {
+        'rMin': Param(0.0, 'm', 'grains with a radius below rMin never degrade (fragments included)',
+                      nonNegative, 'a finite number >= 0'),
+        'mask': Param(0, '-', 'groupMask selecting the checked grains (dynamic spheres); 0 = all',
+                      anyInt, 'an integer'),
+        'adjustDt': Param(True, '-', 'after grains shrink, scale O.dt by the drop of utils.PWaveTimeStep() '
+                          '(eq. 5: dt_cr ~ r sqrt(rho/E)); skipped while a time stepper is active',
+                          boolean, 'True or False'),
+    }
+
+
+class _BallastEngine(PyRunner):
+    _params = {}
+    _outputs = {}   # name -> (initial value, doc); updated at run time
+
+    def __init__(self, **kw):
+        name = type(self).__name__
+        key = kw.pop('_key', None) or uuid.uuid4().hex[:12]
+        if 'command' in kw:
+            raise TypeError('%s: command is set by the engine itself and cannot be given' % name)
+        periodic = {k: kw.pop(k) for k in list(kw) if k in _PERIODIC}
+        unknown = sorted(k for k in kw if k not in self._params)
+        if unknown:
+            raise TypeError('%s: unknown parameter(s) %s; parameters: %s; periodic settings: %s'
+                            % (name, ', '.join(unknown), ', '.join(self._params), ', '.join(_PERIODIC)))
+        missing = [k for k, p in self._params.items() if p.default is None and k not in kw]
+        if missing:
+            raise ValueError('%s: parameter(s) %s required: %s' % (name, ', '.join(missing), '; '.join(
+                self._params[k].docline(k) for k in missing)))
+        values = {k: validate(name, self._params, k, kw.get(k, p.default)) for k, p in self._params.items()}
+        PyRunner.__init__(self, command=_COMMAND % key, **periodic)
+        self.__dict__.update(values)
+        self.__dict__['_key'] = key
+        for k, (v, _) in self._outputs.items():
+            self.__dict__[k] = list(v) if isinstance(v, list) else v
+        self.__dict__['_counter'] = 0
+        _live[key] = self
+        self._save()
+
+    def __setattr__(self, name, value):
+        if name in self._params:
+            self.__dict__[name] = validate(type(self).__name__, self._params, name, value)
+            self._save()
+        elif name == 'command' and '_key' in self.__dict__:
+            raise AttributeError('%s: command is set by the engine itself' % type(self).__name__)
+        elif name in self._outputs:
+            raise AttributeError('%s: %s is an output, updated at run time' % (type(self).__name__, name))
+        else:
+            PyRunner.__setattr__(self, name, value)
+
+    # ---------------------------------------------------------------- state
+    def state(self):
+        """Parameters and outputs as a JSON-able dict (what O.save keeps in O.tags)."""
+        s = {'class': type(self).__name__, 'key': self._key, 'counter': self._counter}
+        s['params'] = {k: self.__dict__[k] for k in self._params}
+        s['outputs'] = {k: self.__dict__[k] for k in self._outputs}
+        return s
+
+    def _save(self):
+        O.tags[_TAG + self._key] = json.dumps(self.state())
+
+    def eventsArray(self):
+        """events as a NumPy structured array (t, iter, id, radius, value, strength, nNew)."""
+        dt = [('t', float), ('iter', np.int64), ('id', np.int64), ('radius', float), ('value', float),
+              ('strength', float), ('nNew', np.int64)]
+        return np.array([(e['t'], e['iter'], e['id'], e['radius'], e['value'], e['strength'], len(e['newIds']))
+                         for e in self.events], dtype=dt)
+
+    def __repr__(self):
+        p = ', '.join('%s=%r' % (k, self.__dict__[k]) for k in self._params)
+        return '<%s %s label=%r %s>' % (type(self).__name__, p, self.label, self._summary())
+
+    # ---------------------------------------------------------------- running
+    def _fire(self):
+        t0 = time.perf_counter()
+        tab = harvest.grains()
+        sel = tab.select(self.mask)
+        changed = self._check(tab, tab.ids[sel], tab.radii[sel])
+        d = self.__dict__
+        d['nChecks'] += 1
+        if changed or (_TAG + self._key) not in O.tags.keys():
+            self._save()
+        d['checkSeconds'] += time.perf_counter() - t0
+
+    def _event(self, kind, bid, r, value, strength, newIds):
+        self.events.append({'kind': kind, 't': O.time, 'iter': O.iter, 'id': bid, 'radius': r, 'value': value,
+                            'strength': strength, 'newIds': newIds})
+
+    def _adjustDt(self, pw0):
+        """Eq. 5: the critical step scales with the smallest radius; keep O.dt's safety margin."""
+        if pw0 is None:
+            return
+        pw1 = utils.PWaveTimeStep()
+        if 0 < pw1 < pw0:
+            O.dt = O.dt * pw1 / pw0
+
+    def _dtBefore(self):
+        return utils.PWaveTimeStep() if self.adjustDt and not O.dynDt else None
+
+
+class BallastCrushEngine(_BallastEngine):
+    _params = dict({
+        'ft0': Param(None, 'Pa m^m', 'reference strength f_t0 of eq. 4, f_t = ft0 / r^m', positive,
+                     'a finite number > 0'),
+        'm': Param(1.0, '-', 'size-effect exponent of eq. 4 (the paper: 1)', nonNegative, 'a finite number >= 0'),
+        'pattern': Param(6, '-', 'fragment layout (Fig. 1): 4 (tetrahedral), 6 (octahedral), 14, or planar4 '
+                         '(four in a plane, the paper\'s 70 % loss)', pattern, "4, 6, 14, 'tetra4', 'planar4', "
+                         "'octa6' or 'fill14'"),
+        'seed': Param(0, '-', 'seed of the random orientation of fragments (reproducible)', intNonNegative,
+                      'an integer >= 0'),
+    }, **_common())
+    _outputs = {
+        'nCrushed': (0, 'grains crushed so far'),
+        'volumeLost': (0.0, 'grain volume lost by crushing [m^3]'),
+        'massLost': (0.0, 'grain mass lost by crushing [kg]'),
+        'events': ([], 'one dict per crushed grain: kind, t, iter, id, radius, value (sigma_e [Pa]), '
+                       'strength (f_t [Pa]), newIds'),
+        'nChecks': (0, 'checks run so far'),
+        'checkSeconds': (0.0, 'wall time spent in checks [s]'),
+        'maxStressRatio': (0.0, 'largest sigma_e / f_t over the grains at the last check [-]'),
+    }
+
+    def _summary(self):
+        return 'nCrushed=%d volumeLost=%.4g m^3 massLost=%.4g kg' % (self.nCrushed, self.volumeLost, self.massLost)
+
+    def _check(self, tab, ids, radii):
+        if len(ids) == 0:
+            return False
+        se, ft, crush = _ballast.crushCheck(harvest.stresses(ids), radii, self.ft0, self.m, self.rMin)
+        self.__dict__['maxStressRatio'] = float(np.max(se / ft))
+        hit = np.flatnonzero(crush)
+        if len(hit) == 0:
+            return False
+        pw0 = self._dtBefore()
+        for k in hit:
+            self._replace(tab, int(ids[k]), float(radii[k]), float(se[k]), float(ft[k]))
+        tab.commit()
+        self._adjustDt(pw0)
+        return True
+
+    def _replace(self, tab, bid, r, se, ft):
+        """Section 2: the grain is erased and replaced by fragments inside it (Fig. 1)."""
+        b = O.bodies[bid]
+        st, mat, color, mask = b.state, b.material, b.shape.color, b.groupMask
+        pos, vel, angVel, mass = Vector3(st.pos), Vector3(st.vel), Vector3(st.angVel), st.mass
+        frags = _ballast.placeFragments(self.pattern, (pos[0], pos[1], pos[2]), r, self.seed, self._counter)
+        self.__dict__['_counter'] += 1
+        O.bodies.erase(bid)
+        newIds, newMass = [], 0.0
+        for x, y, z, rf in frags:
+            c = Vector3(x, y, z)
+            nb = utils.sphere(c, rf, material=mat, color=color, mask=mask)
+            # rigid-body velocity of the parent at the fragment's centre: momentum kept with the mass kept
+            nb.state.vel = vel + angVel.cross(c - pos)
+            nb.state.angVel = angVel
+            newMass += nb.state.mass
+            newIds.append(O.bodies.append(nb))
+        tab.replaced(bid, newIds, frags[:, 3], mask)
+        d = self.__dict__
+        d['nCrushed'] += 1
+        d['volumeLost'] += 4.0 / 3.0 * math.pi * (r ** 3 - float(np.sum(frags[:, 3] ** 3)))
+        d['massLost'] += mass - newMass
+        self._event('crush', bid, r, se, ft, newIds)
+
+
+class BallastAbrasionEngine(_BallastEngine):
+    _params = dict({
+        'strength': Param(None, 'Pa', 'contact pressure that abrades a grain (eq. 6 compares the maximum Hertz '
+                          'pressure p0 of eq. 7 with it; kept apart from ft0, which is in Pa m)', positive,
+                          'a finite number > 0'),
+        'gamma': Param(0.9, '-', 'radius reduction factor: r_new = gamma r_old', openUnit, 'a number in (0, 1)'),
+    }, **_common())
+    _outputs = {
+        'nAbraded': (0, 'abrasion events so far'),
+        'volumeLost': (0.0, 'grain volume lost by abrasion [m^3]'),
+        'massLost': (0.0, 'grain mass lost by abrasion [kg]'),
+        'events': ([], 'one dict per abrasion: kind, t, iter, id, radius (before), value (p0 [Pa]), '
+                       'strength [Pa], newIds (empty)'),
+        'nChecks': (0, 'checks run so far'),
+        'checkSeconds': (0.0, 'wall time spent in checks [s]'),
+        'maxPressureRatio': (0.0, 'largest p0 / strength over the grains at the last check [-]'),
+    }
+
+    def _summary(self):
+        return 'nAbraded=%d volumeLost=%.4g m^3 massLost=%.4g kg' % (self.nAbraded, self.volumeLost, self.massLost)
+
+    def _check(self, tab, ids, radii):
+        if len(ids) == 0:
+            return False
+        id1, id2, Fn, uN = harvest.contacts()
+        index = np.full(len(tab.radiusById), -1, dtype=np.int64)
+        index[ids] = np.arange(len(ids))
+        p0, abrade = _ballast.abrasionCheck(radii, index[id1], index[id2], Fn, tab.radiusById[id1],
+                                            tab.radiusById[id2], uN, self.strength, self.rMin)
+        self.__dict__['maxPressureRatio'] = float(np.max(p0) / self.strength)
+        hit = np.flatnonzero(abrade)
+        if len(hit) == 0:
+            return False
+        pw0 = self._dtBefore()
+        g = self.gamma
+        for k in hit:
+            bid, r = int(ids[k]), float(radii[k])
+            mass = O.bodies[bid].state.mass
+            # radius, mass (g^3), inertia (g^5) and the contacts' refR together: bodyStressTensors reads refR
+            utils.growParticle(bid, g, True)
+            tab.resized(bid, g * r)
+            d = self.__dict__
+            d['nAbraded'] += 1
+            d['volumeLost'] += 4.0 / 3.0 * math.pi * r ** 3 * (1 - g ** 3)
+            d['massLost'] += mass - O.bodies[bid].state.mass
+            self._event('abrasion', bid, r, float(p0[k]), self.strength, [])
+        tab.commit()
+        self._adjustDt(pw0)
+        return True
+
+
+for _c in (BallastCrushEngine, BallastAbrasionEngine):
+    _classes[_c.__name__] = _c
+    _c.__doc__ = ('%s: see the module doc.\n\nParameters (validated when built and when set):\n%s\n\n'
+                  'Outputs (updated at run time):\n%s' % (
+                      _c.__name__, docTable(_c._params),
+                      '\n'.join('    %s: %s' % (k, d) for k, (v, d) in _c._outputs.items())))
+BallastCrushEngine.__doc__ = 'Bulk crushing, section 2 (eqs. 1-4, Fig. 1).\n\n' + BallastCrushEngine.__doc__
+BallastAbrasionEngine.__doc__ = 'Abrasion, section 3 (eqs. 6-7).\n\n' + BallastAbrasionEngine.__doc__
+
+
+# ---------------------------------------------------------------- dispatch and persistence
+def _inEngines(eng):
+    return any(e is eng for e in O.engines)
+
+
+def _fire(key):
+    """Called by the engine's command. Restores a loaded engine first if needed."""
+    eng = _live.get(key)
+    if eng is None or not _inEngines(eng):
+        eng = _restoreKey(key)
+    eng._fire()
+
+
+def _restoreKey(key):
+    tag = _TAG + key
+    if tag not in O.tags.keys():
+        raise RuntimeError("ballast: the engine with key %r has no saved state (O.tags[%r] is missing), so it "
+                           "cannot be restored; rebuild it with BallastCrushEngine(...) or BallastAbrasionEngine(...) "
+                           "and put it in O.engines" % (key, tag))
+    s = json.loads(O.tags[tag])
+    engines = list(O.engines)
+    pos = [i for i, e in enumerate(engines) if isinstance(e, PyRunner) and e.command == _COMMAND % key]
+    if not pos:
+        raise RuntimeError('ballast: no engine in O.engines runs the command of %r' % key)
+    old = engines[pos[0]]
+    periodic = {k: getattr(old, k) for k in _PERIODIC}
+    new = _classes[s['class']](_key=key, **dict(s['params'], **periodic))
+    for k in _PERIODIC_STATE:
+        setattr(new, k, getattr(old, k))
+    new.__dict__.update(s['outputs'])
+    new.__dict__['_counter'] = s['counter']
+    engines[pos[0]] = new
+    O.engines = engines
+    if new.label:
+        setattr(builtins, new.label, new)
+    return new
+
+
+def restore():
+    """Re-attach every ballast engine of a loaded scene now (they also re-attach at their next check).
+    Returns the restored engines."""
+    out = []
+    for e in list(O.engines):
+        if type(e) is PyRunner and e.command.startswith(_COMMAND.split('%')[0]):
+            key = e.command[len(_COMMAND.split('%')[0]):].strip("()'\"")
+            out.append(_restoreKey(key))
+    return out

@@ -1,0 +1,194 @@
+// Tests of the abrasion decision, Dubina & Elias section 3: abrade <=> r >= rMin and max_c p0 > strength,
+// p0 = 3 Fn / (2 pi R uN) the maximum Hertz pressure of eq. 7.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "BallastAbrasionEngine.hpp"
+#include "InputCheck.hpp"
+
+using namespace ballast;
+
+namespace {
+
+const double kPi  = std::acos(-1.0);
+const double kRel = 1e-12;
+
+// Eq. 7 by hand with R = R1 R2 / (R1 + R2), a wall (0) giving the other radius.
+double p0Hand(double Fn, double R1, double R2, double uN)
+{
+	const double R = R1 == 0 ? R2 : R2 == 0 ? R1 : R1 * R2 / (R1 + R2);
+	return 3.0 * Fn / (2.0 * kPi * R * uN);
+}
+
+// Normal force giving pressure p0 (eq. 7 inverted).
+double forceFor(double p0, double R, double uN) { return p0 * 2.0 * kPi * R * uN / 3.0; }
+
+// A list of contacts in the flat form evaluateAbrasion takes.
+struct Contacts {
+	std::vector<long>   g1, g2;
+	std::vector<double> Fn, R1, R2, uN;
+	void                add(long a, long b, double f, double r1, double r2, double u)
+	{
+		g1.push_back(a);
+		g2.push_back(b);
+		Fn.push_back(f);
+		R1.push_back(r1);
+		R2.push_back(r2);
+		uN.push_back(u);
+	}
+	long n() const { return static_cast<long>(g1.size()); }
+};
+
+void run(const AbrasionParameters& p, const std::vector<double>& radii, const Contacts& c, std::vector<double>& p0,
+         std::vector<std::uint8_t>& ab)
+{
+	p0.assign(radii.size(), -1.0);
+	ab.assign(radii.size(), 7);
+	evaluateAbrasion(p, static_cast<long>(radii.size()), radii.data(), c.n(), c.g1.data(), c.g2.data(), c.Fn.data(),
+	                 c.R1.data(), c.R2.data(), c.uN.data(), p0.data(), ab.data());
+}
+
+}  // namespace
+
+TEST(BallastAbrasionEngine, MaxOverContactsOfOneGrain)
+{
+	// One grain, three contacts of different pressure: p0max is the largest of the three by eq. 7.
+	const std::vector<double> radii = {0.02};
+	Contacts                  c;
+	c.add(0, -1, 1e3, 0.02, 0.015, 1e-5);
+	c.add(-1, 0, 4e3, 0.01, 0.02, 2e-5);  // the grain on side 2
+	c.add(0, -1, 2e3, 0.02, 0.0, 5e-6);   // wall
+	const double p[3] = {p0Hand(1e3, 0.02, 0.015, 1e-5), p0Hand(4e3, 0.01, 0.02, 2e-5), p0Hand(2e3, 0.02, 0.0, 5e-6)};
+	const double pmax = std::max(p[0], std::max(p[1], p[2]));
+	std::vector<double>       p0;
+	std::vector<std::uint8_t> ab;
+	run({0.99 * pmax, 0.0}, radii, c, p0, ab);
+	EXPECT_NEAR(p0[0], pmax, kRel * pmax);
+	EXPECT_EQ(ab[0], 1);
+	run({1.01 * pmax, 0.0}, radii, c, p0, ab);
+	EXPECT_NEAR(p0[0], pmax, kRel * pmax);
+	EXPECT_EQ(ab[0], 0);
+}
+
+TEST(BallastAbrasionEngine, WallContact)
+{
+	// Sphere on a wall, R2 = 0: R = R1, p0 = 3 Fn / (2 pi R1 uN).
+	const double              r = 0.018, Fn = 3e3, uN = 8e-6;
+	const double              ph = 3.0 * Fn / (2.0 * kPi * r * uN);
+	Contacts                  c;
+	c.add(0, -1, Fn, r, 0.0, uN);
+	std::vector<double>       p0;
+	std::vector<std::uint8_t> ab;
+	run({1e3, 0.0}, {r}, c, p0, ab);
+	EXPECT_NEAR(p0[0], ph, kRel * ph);
+	EXPECT_EQ(ab[0], 1);
+}
+
+TEST(BallastAbrasionEngine, ContactCountsForBothSides)
+{
+	// A contact between grains 0 and 2 raises both; grain 1 has no contact and keeps p0max = 0.
+	const std::vector<double> radii = {0.02, 0.02, 0.01};
+	Contacts                  c;
+	c.add(0, 2, 5e3, 0.02, 0.01, 1e-5);
+	const double              ph = 3.0 * 5e3 / (2.0 * kPi * (0.02 * 0.01 / 0.03) * 1e-5);
+	std::vector<double>       p0;
+	std::vector<std::uint8_t> ab;
+	run({0.99 * ph, 0.0}, radii, c, p0, ab);
+	EXPECT_NEAR(p0[0], ph, kRel * ph);
+	EXPECT_NEAR(p0[2], ph, kRel * ph);
+	EXPECT_EQ(p0[1], 0.0);
+	EXPECT_EQ(ab[0], 1);
+	EXPECT_EQ(ab[1], 0);
+	EXPECT_EQ(ab[2], 1);
+}
+
+TEST(BallastAbrasionEngine, UncheckedSidesSkipped)
+{
+	// A contact with both sides -1 is ignored entirely, even with data eq. 7 would reject (two walls).
+	Contacts c;
+	c.add(-1, -1, 1e9, 0.0, 0.0, 1e-3);
+	c.add(-1, 0, 10.0, 0.01, 0.02, 1e-5);
+	std::vector<double>       p0;
+	std::vector<std::uint8_t> ab;
+	EXPECT_NO_THROW(run({1e12, 0.0}, {0.02}, c, p0, ab));
+	const double ph = p0Hand(10.0, 0.01, 0.02, 1e-5);
+	EXPECT_NEAR(p0[0], ph, kRel * ph);
+	EXPECT_EQ(ab[0], 0);
+}
+
+TEST(BallastAbrasionEngine, TensileOrSeparatedContactsGiveNoPressure)
+{
+	Contacts c;
+	c.add(0, -1, -50.0, 0.02, 0.02, 1e-5);
+	c.add(0, -1, 50.0, 0.02, 0.02, -1e-6);
+	std::vector<double>       p0;
+	std::vector<std::uint8_t> ab;
+	run({1.0, 0.0}, {0.02}, c, p0, ab);
+	EXPECT_EQ(p0[0], 0.0);
+	EXPECT_EQ(ab[0], 0);
+}
+
+TEST(BallastAbrasionEngine, ThresholdAndMinimumRadius)
+{
+	// Pressures set to 1.01 and 0.99 times the strength; grains below rMin never abrade, r == rMin may.
+	const double              S = 2e8, rMin = 0.015, uN = 1e-5;
+	const std::vector<double> radii = {0.02, 0.02, 0.01, rMin, std::nextafter(rMin, 0.0)};
+	const double              fac[5] = {1.01, 0.99, 5.0, 1.01, 1.01};
+	Contacts                  c;
+	for (long g = 0; g < 5; ++g)  // each grain on a wall: R = radius
+		c.add(g, -1, forceFor(fac[g] * S, radii[g], uN), radii[g], 0.0, uN);
+	std::vector<double>       p0;
+	std::vector<std::uint8_t> ab;
+	run({S, rMin}, radii, c, p0, ab);
+	for (int g = 0; g < 5; ++g)
+		EXPECT_NEAR(p0[g], fac[g] * S, kRel * S) << g;
+	EXPECT_EQ(ab[0], 1);
+	EXPECT_EQ(ab[1], 0);
+	EXPECT_EQ(ab[2], 0);  // 5x the strength but r < rMin
+	EXPECT_EQ(ab[3], 1);  // r == rMin is eligible
+	EXPECT_EQ(ab[4], 0);
+}
+
+TEST(BallastAbrasionEngine, BadInputsThrow)
+{
+	std::vector<double>       p0;
+	std::vector<std::uint8_t> ab;
+	for (long bad : {1L, 5L, -2L}) {
+		Contacts c;
+		c.add(0, bad, 10.0, 0.01, 0.01, 1e-6);
+		try {
+			run({1e6, 0.0}, {0.01}, c, p0, ab);
+			ADD_FAILURE() << "grain index " << bad << " accepted";
+		} catch (const ArgumentError& e) {
+			const std::string m = e.what();
+			EXPECT_NE(m.find("grain index of contact 0"), std::string::npos) << m;
+			EXPECT_NE(m.find(std::to_string(bad)), std::string::npos) << m;
+		}
+	}
+	Contacts c;
+	EXPECT_THROW(run({0.0, 0.0}, {0.01}, c, p0, ab), ArgumentError);
+	EXPECT_THROW(run({1e6, -1.0}, {0.01}, c, p0, ab), ArgumentError);
+	try {
+		run({1e6, 0.0}, {0.01, 0.0}, c, p0, ab);
+		ADD_FAILURE() << "zero radius accepted";
+	} catch (const ArgumentError& e) {
+		EXPECT_EQ(std::string(e.what()).rfind("radii[1]", 0), 0u) << e.what();
+	}
+	try {
+		run({-5.0, 0.0}, {0.01}, c, p0, ab);
+		ADD_FAILURE() << "negative strength accepted";
+	} catch (const ArgumentError& e) {
+		EXPECT_EQ(std::string(e.what()).rfind("strength", 0), 0u) << e.what();
+	}
+	try {
+		run({5.0, std::numeric_limits<double>::quiet_NaN()}, {0.01}, c, p0, ab);
+		ADD_FAILURE() << "NaN rMin accepted";
+	} catch (const ArgumentError& e) {
+		EXPECT_EQ(std::string(e.what()).rfind("rMin", 0), 0u) << e.what();
+	}
+}

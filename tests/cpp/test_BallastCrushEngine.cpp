@@ -1,0 +1,186 @@
+// Tests of the bulk crushing decision, Dubina & Elias section 2: crush <=> r >= rMin and sigma_e > f_t (eq. 1),
+// sigma_e by eq. 2 of the fabric stress of eq. 3, f_t = ft0 / r^m (eq. 4).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "BallastCrushEngine.hpp"
+#include "FabricStress.hpp"
+#include "InputCheck.hpp"
+
+using namespace ballast;
+
+namespace {
+
+const double kPi  = std::acos(-1.0);
+const double kRel = 1e-12;
+
+// Row-major fabric stress of a grain of radius r squeezed by two opposite forces F along x (eq. 3):
+// sigma_xx = -3F/(2 pi r^2), so sigma_e = 3F/(2 pi r^2) (eq. 2, uniaxial).
+void diametral(double r, double F, double* s9)
+{
+	for (int k = 0; k < 9; ++k)
+		s9[k] = 0;
+	s9[0] = -3.0 * F / (2.0 * kPi * r * r);
+}
+
+// Force that gives sigma_e = target on a grain of radius r in the diametral test.
+double forceFor(double target, double r) { return target * 2.0 * kPi * r * r / 3.0; }
+
+std::string messageOf(const CrushParameters& p)
+{
+	try {
+		p.validate();
+	} catch (const ArgumentError& e) {
+		return e.what();
+	}
+	return "";
+}
+
+}  // namespace
+
+TEST(BallastCrushEngine, ThresholdAboveAndBelow)
+{
+	// Grains at 1.01 f_t crush, at 0.99 f_t do not; f_t = ft0 / r (eq. 4 with m = 1).
+	const CrushParameters p{2.5e5, 1.0, 0.0};
+	const double          radii[4] = {0.012, 0.012, 0.022, 0.022};
+	const double          factor[4] = {1.01, 0.99, 0.99, 1.01};
+	double                s[36], se[4], ft[4];
+	std::uint8_t          crush[4];
+	for (int g = 0; g < 4; ++g)
+		diametral(radii[g], forceFor(factor[g] * p.ft0 / radii[g], radii[g]), s + 9 * g);
+	evaluateCrushing(p, 4, s, radii, se, ft, crush);
+	for (int g = 0; g < 4; ++g) {
+		const double fth = p.ft0 / radii[g];
+		EXPECT_NEAR(ft[g], fth, kRel * fth) << g;
+		EXPECT_NEAR(se[g], factor[g] * fth, kRel * fth) << g;
+		EXPECT_EQ(crush[g], factor[g] > 1 ? 1 : 0) << g;
+	}
+}
+
+TEST(BallastCrushEngine, ThroughFabricStress)
+{
+	// Chain eq. 3 -> eq. 2 -> eq. 1: contact forces F = 1.01 * (2 pi r^2 / 3) f_t crush, 0.99 does not.
+	const CrushParameters p{1.8e5, 1.0, 0.0};
+	const double          r = 0.016, ft = p.ft0 / r;
+	for (double factor : {1.01, 0.99}) {
+		const double F = forceFor(factor * ft, r);
+		const Mat3   S = fabricStress(r, {Vec3(r, 0, 0), Vec3(-r, 0, 0)}, {Vec3(-F, 0, 0), Vec3(F, 0, 0)});
+		double       s9[9];
+		for (int i = 0; i < 3; ++i)
+			for (int j = 0; j < 3; ++j)
+				s9[3 * i + j] = S(i, j);
+		double       se, st;
+		std::uint8_t c;
+		evaluateCrushing(p, 1, s9, &r, &se, &st, &c);
+		EXPECT_NEAR(se, 3.0 * F / (2.0 * kPi * r * r), kRel * ft);
+		EXPECT_NEAR(se, factor * ft, kRel * ft);
+		EXPECT_EQ(c, factor > 1 ? 1 : 0);
+	}
+}
+
+TEST(BallastCrushEngine, ExactlyAtThresholdDoesNotCrush)
+{
+	// Eq. 1 is strict: sigma_e == f_t is no crush. Uniaxial stress -f_t gives sigma_e = f_t exactly
+	// (sqrt of the rounded square of x is x in IEEE arithmetic), and f_t = ft0 / r is one division.
+	const CrushParameters p{3e5, 1.0, 0.0};
+	const double          r = 0.019, ft = p.ft0 / r;
+	double                s9[9] = {-ft, 0, 0, 0, 0, 0, 0, 0, 0};
+	double                se, st;
+	std::uint8_t          c;
+	evaluateCrushing(p, 1, s9, &r, &se, &st, &c);
+	EXPECT_NEAR(se, ft, kRel * ft);
+	EXPECT_EQ(c, se > st ? 1 : 0);
+	EXPECT_EQ(c, 0);
+}
+
+TEST(BallastCrushEngine, SizeExponent)
+{
+	// m = 2: f_t = ft0 / r^2; m = 0: f_t = ft0 whatever the size.
+	const double r = 0.02;
+	for (double m : {0.0, 2.0}) {
+		const CrushParameters p{m == 0 ? 6e6 : 2.4e3, m, 0.0};
+		const double          fth = p.ft0 / std::pow(r, m);
+		for (double factor : {1.01, 0.99}) {
+			double s9[9];
+			diametral(r, forceFor(factor * fth, r), s9);
+			double       se, st;
+			std::uint8_t c;
+			evaluateCrushing(p, 1, s9, &r, &se, &st, &c);
+			EXPECT_NEAR(st, fth, kRel * fth) << "m = " << m;
+			EXPECT_EQ(c, factor > 1 ? 1 : 0) << "m = " << m;
+		}
+	}
+}
+
+TEST(BallastCrushEngine, MinimumRadius)
+{
+	// r < rMin never crushes, even at 1e6 times its strength; r == rMin is eligible.
+	const double          rMin = 0.01;
+	const CrushParameters p{2e5, 1.0, rMin};
+	const double          radii[3] = {0.5 * rMin, std::nextafter(rMin, 0.0), rMin};
+	double                s[27], se[3], ft[3];
+	std::uint8_t          crush[3];
+	for (int g = 0; g < 3; ++g)
+		diametral(radii[g], forceFor(1e6 * p.ft0 / radii[g], radii[g]), s + 9 * g);
+	evaluateCrushing(p, 3, s, radii, se, ft, crush);
+	EXPECT_EQ(crush[0], 0);
+	EXPECT_EQ(crush[1], 0);
+	EXPECT_EQ(crush[2], 1);
+	// sigma_e and f_t are still reported for the small grains
+	EXPECT_NEAR(se[0], 1e6 * p.ft0 / radii[0], kRel * 1e6 * p.ft0 / radii[0]);
+	EXPECT_NEAR(ft[0], p.ft0 / radii[0], kRel * p.ft0 / radii[0]);
+}
+
+TEST(BallastCrushEngine, RowMajorShearAndSymmetricPart)
+{
+	// Stress with only s_xy = t (row-major index 1) has symmetric shear t/2: sigma_e = sqrt(3) t / 2.
+	const CrushParameters p{1e5, 1.0, 0.0};
+	const double          r = 0.02, ft = p.ft0 / r;
+	for (double factor : {1.01, 0.99}) {
+		const double t     = factor * ft * 2.0 / std::sqrt(3.0);
+		double       s9[9] = {0, t, 0, 0, 0, 0, 0, 0, 0};
+		double       se, st;
+		std::uint8_t c;
+		evaluateCrushing(p, 1, s9, &r, &se, &st, &c);
+		EXPECT_NEAR(se, std::sqrt(3.0) * t / 2.0, kRel * ft);
+		EXPECT_EQ(c, factor > 1 ? 1 : 0);
+	}
+}
+
+TEST(BallastCrushEngine, BadParametersNameTheArgument)
+{
+	const double nan = std::numeric_limits<double>::quiet_NaN();
+	EXPECT_EQ(messageOf({0.0, 1.0, 0.0}).rfind("ft0", 0), 0u);
+	EXPECT_EQ(messageOf({-1.0, 1.0, 0.0}).rfind("ft0", 0), 0u);
+	EXPECT_EQ(messageOf({nan, 1.0, 0.0}).rfind("ft0", 0), 0u);
+	EXPECT_EQ(messageOf({1e5, -1.0, 0.0}).rfind("m", 0), 0u);
+	EXPECT_EQ(messageOf({1e5, nan, 0.0}).rfind("m", 0), 0u);
+	EXPECT_EQ(messageOf({1e5, 1.0, -0.01}).rfind("rMin", 0), 0u);
+	EXPECT_EQ(messageOf({1e5, 1.0, nan}).rfind("rMin", 0), 0u);
+	EXPECT_EQ(messageOf({1e5, 0.0, 0.0}), "");  // m = 0 and rMin = 0 are allowed
+
+	// evaluateCrushing validates too, and names a bad radius by its index
+	double       s[18] = {}, se[2], ft[2];
+	std::uint8_t c[2];
+	const double radii[2] = {0.01, -0.02};
+	EXPECT_THROW(evaluateCrushing({-1.0, 1.0, 0.0}, 1, s, radii, se, ft, c), ArgumentError);
+	try {
+		evaluateCrushing({1e5, 1.0, 0.0}, 2, s, radii, se, ft, c);
+		ADD_FAILURE() << "negative radius accepted";
+	} catch (const ArgumentError& e) {
+		EXPECT_EQ(std::string(e.what()).rfind("radii[1]", 0), 0u) << e.what();
+	}
+	const double nanR[1] = {nan};
+	EXPECT_THROW(evaluateCrushing({1e5, 1.0, 0.0}, 1, s, nanR, se, ft, c), ArgumentError);
+}
+
+TEST(BallastCrushEngine, NoGrains)
+{
+	// n = 0 touches nothing.
+	EXPECT_NO_THROW(evaluateCrushing({1e5, 1.0, 0.0}, 0, nullptr, nullptr, nullptr, nullptr, nullptr));
+}
