@@ -11,7 +11,7 @@ public:
 	explicit ArgumentError(const std::string& what) : std::invalid_argument(what) {}
 };
 
-// Formats a double the way Python prints it (shortest round-trip).
+// Formats a double in the shortest %g form that reads back to the same value (1e+02 for 100).
 std::string formatValue(double v);
 
 void requireFinite(const std::string& name, double v);

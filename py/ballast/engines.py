@@ -97,8 +97,14 @@ class _BallastEngine(PyRunner):
         s['outputs'] = {k: self.__dict__[k] for k in self._outputs}
         return s
 
-    def _save(self):
-        O.tags[_TAG + self._key] = json.dumps(self.state())
+    def _save(self, events=True):
+        """State to O.tags: parameters and scalar outputs (small, written at every check) and the
+        events (written only when they changed)."""
+        s = self.state()
+        ev = s['outputs'].pop('events')
+        if events:
+            O.tags[_TAG + self._key + '.events'] = json.dumps(ev)
+        O.tags[_TAG + self._key] = json.dumps(s)
 
     def eventsArray(self):
         """events as a NumPy structured array (t, iter, id, radius, value, strength, nNew)."""
@@ -107,9 +113,11 @@ class _BallastEngine(PyRunner):
         return np.array([(e['t'], e['iter'], e['id'], e['radius'], e['value'], e['strength'], len(e['newIds']))
                          for e in self.events], dtype=dt)
 
-    def __repr__(self):
+    def __str__(self):
         p = ', '.join('%s=%r' % (k, self.__dict__[k]) for k in self._params)
         return '<%s %s label=%r %s>' % (type(self).__name__, p, self.label, self._summary())
+
+    __repr__ = __str__
 
     # ---------------------------------------------------------------- running
     def _fire(self):
@@ -119,13 +127,12 @@ class _BallastEngine(PyRunner):
         changed = self._check(tab, tab.ids[sel], tab.radii[sel])
         d = self.__dict__
         d['nChecks'] += 1
-        if changed or (_TAG + self._key) not in O.tags.keys():
-            self._save()
         d['checkSeconds'] += time.perf_counter() - t0
+        self._save(events=changed or (_TAG + self._key + '.events') not in O.tags.keys())
 
-    def _event(self, kind, bid, r, value, strength, newIds):
-        self.events.append({'kind': kind, 't': O.time, 'iter': O.iter, 'id': bid, 'radius': r, 'value': value,
-                            'strength': strength, 'newIds': newIds})
+    def _event(self, kind, bid, pos, r, value, strength, newIds):
+        self.events.append({'kind': kind, 't': O.time, 'iter': O.iter, 'id': bid, 'pos': [pos[0], pos[1], pos[2]],
+                            'radius': r, 'value': value, 'strength': strength, 'newIds': newIds})
 
     def _adjustDt(self, pw0):
         """Eq. 5: the critical step scales with the smallest radius; keep O.dt's safety margin."""
@@ -154,7 +161,7 @@ class BallastCrushEngine(_BallastEngine):
         'nCrushed': (0, 'grains crushed so far'),
         'volumeLost': (0.0, 'grain volume lost by crushing [m^3]'),
         'massLost': (0.0, 'grain mass lost by crushing [kg]'),
-        'events': ([], 'one dict per crushed grain: kind, t, iter, id, radius, value (sigma_e [Pa]), '
+        'events': ([], 'one dict per crushed grain: kind, t [s], iter, id, pos [m], radius [m], value (sigma_e [Pa]), '
                        'strength (f_t [Pa]), newIds'),
         'nChecks': (0, 'checks run so far'),
         'checkSeconds': (0.0, 'wall time spent in checks [s]'),
@@ -201,7 +208,7 @@ class BallastCrushEngine(_BallastEngine):
         d['nCrushed'] += 1
         d['volumeLost'] += 4.0 / 3.0 * math.pi * (r ** 3 - float(np.sum(frags[:, 3] ** 3)))
         d['massLost'] += mass - newMass
-        self._event('crush', bid, r, se, ft, newIds)
+        self._event('crush', bid, pos, r, se, ft, newIds)
 
 
 class BallastAbrasionEngine(_BallastEngine):
@@ -215,7 +222,7 @@ class BallastAbrasionEngine(_BallastEngine):
         'nAbraded': (0, 'abrasion events so far'),
         'volumeLost': (0.0, 'grain volume lost by abrasion [m^3]'),
         'massLost': (0.0, 'grain mass lost by abrasion [kg]'),
-        'events': ([], 'one dict per abrasion: kind, t, iter, id, radius (before), value (p0 [Pa]), '
+        'events': ([], 'one dict per abrasion: kind, t [s], iter, id, pos [m], radius before [m], value (p0 [Pa]), '
                        'strength [Pa], newIds (empty)'),
         'nChecks': (0, 'checks run so far'),
         'checkSeconds': (0.0, 'wall time spent in checks [s]'),
@@ -241,7 +248,8 @@ class BallastAbrasionEngine(_BallastEngine):
         g = self.gamma
         for k in hit:
             bid, r = int(ids[k]), float(radii[k])
-            mass = O.bodies[bid].state.mass
+            st = O.bodies[bid].state
+            mass, pos = st.mass, st.pos
             # radius, mass (g^3), inertia (g^5) and the contacts' refR together: bodyStressTensors reads refR
             utils.growParticle(bid, g, True)
             tab.resized(bid, g * r)
@@ -249,7 +257,7 @@ class BallastAbrasionEngine(_BallastEngine):
             d['nAbraded'] += 1
             d['volumeLost'] += 4.0 / 3.0 * math.pi * r ** 3 * (1 - g ** 3)
             d['massLost'] += mass - O.bodies[bid].state.mass
-            self._event('abrasion', bid, r, float(p0[k]), self.strength, [])
+            self._event('abrasion', bid, pos, r, float(p0[k]), self.strength, [])
         tab.commit()
         self._adjustDt(pw0)
         return True
@@ -285,6 +293,7 @@ def _restoreKey(key):
                            "cannot be restored; rebuild it with BallastCrushEngine(...) or BallastAbrasionEngine(...) "
                            "and put it in O.engines" % (key, tag))
     s = json.loads(O.tags[tag])
+    s['outputs']['events'] = json.loads(O.tags[tag + '.events']) if (tag + '.events') in O.tags.keys() else []
     engines = list(O.engines)
     pos = [i for i, e in enumerate(engines) if isinstance(e, PyRunner) and e.command == _COMMAND % key]
     if not pos:

@@ -2,7 +2,7 @@
 
 * The grain table (ids, radii, group masks of the dynamic spheres) is cached and rebuilt only when
   the scene changed: its signature is the body count and ``utils.getSpheresVolume()`` (both C++), so
-  any added, erased or resized sphere invalidates it. The engines update it in place after their own
+  any added, erased or resized sphere invalidates it, and so does O.iter going back (O.reset, O.load). The engines update it in place after their own
   changes. After changing which bodies are dynamic by hand, call :func:`refresh`.
 * Fabric stresses come from ``utils.bodyStressTensors()`` (YADE's C++ Love-Weber stress per body,
   eq. 3), converted to one NumPy array in C++ (``ballast.matricesToArray``).
@@ -37,7 +37,8 @@ class GrainTable:
         self._sign()
 
     def _sign(self):
-        self.signature = (len(O.bodies), utils.getSpheresVolume())
+        self.signature = _signature()
+        self.iter = O.iter
         self._selections = {}
 
     def select(self, mask):
@@ -75,9 +76,15 @@ _table = None
 def grains():
     """The current grain table, rebuilt only if the scene changed since it was made."""
     global _table
-    if _table is None or _table.signature != (len(O.bodies), utils.getSpheresVolume()):
+    if _table is None or _table.signature != _signature() or O.iter < _table.iter:
         _table = GrainTable()
+    else:
+        _table.iter = O.iter
     return _table
+
+
+def _signature():
+    return len(O.bodies), utils.getSpheresVolume()
 
 
 def refresh():

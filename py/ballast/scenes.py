@@ -29,7 +29,8 @@ def steelMaterial(E=3e12, nu=0.25, density=7850.0, friction=0.0):
 
 def grainBetweenWalls(r=0.02, overlap=1e-4, E=3e11, block=True):
     """A fresh scene: one grain of radius r [m] at the origin, pressed by two fixed walls z = +-(r - overlap).
-    With block=True the grain's DOFs are blocked, so the contact forces stay constant.
+    With block=True the grain can only move along z, where the two wall forces balance exactly, so
+    the contact forces stay constant (blocking all DOFs would make it non-dynamic: not a grain).
     Returns (grain id, bottom wall id, top wall id)."""
     O.reset()
     steel, ballast = steelMaterial(E=10 * E), ballastMaterial(E=E)
@@ -39,7 +40,7 @@ def grainBetweenWalls(r=0.02, overlap=1e-4, E=3e11, block=True):
     w0 = O.bodies.append(utils.wall(-(r - overlap), axis=2, sense=1, material=steel))
     w1 = O.bodies.append(utils.wall(r - overlap, axis=2, sense=-1, material=steel))
     if block:
-        O.bodies[g].state.blockedDOFs = 'xyzXYZ'
+        O.bodies[g].state.blockedDOFs = 'xyXYZ'
     O.engines = hertzEngines()
     O.dt = 0.5 * utils.PWaveTimeStep()
     return g, w0, w1

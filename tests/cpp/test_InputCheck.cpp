@@ -52,7 +52,7 @@ TEST(InputCheck, FormatValueRoundTrips)
 		const double v = std::ldexp(mant(gen), ex(gen));
 		const std::string s = formatValue(v);
 		EXPECT_EQ(std::strtod(s.c_str(), nullptr), v) << s;
-		// shortest: at most 17 significant digits, and 0.25-like binary fractions need few
+		// at most 17 significant digits: sign, digits, point and a 3-digit exponent fit in 24 characters
 		EXPECT_LE(s.size(), 24u) << s;
 	}
 	EXPECT_EQ(formatValue(0.25), "0.25");

@@ -1,0 +1,294 @@
+"""Tests of py/ballast/engines.py inside YADE: the engines against values computed by hand.
+Runs in Debian's /usr/bin/python3 with YADE imported as a module (see conftest.py)."""
+import builtins
+import math
+
+import numpy as np
+import pytest
+from yade import O, utils
+from yade.wrapper import PyRunner
+
+import ballast
+from ballast.engines import BallastAbrasionEngine, BallastCrushEngine, restore
+from ballast.scenes import (ballastMaterial, grainBetweenWalls, hertzEngines, squeezedStress,
+                            steelMaterial)
+
+R = 0.02          # grain radius [m]
+OVERLAP = 1e-4    # wall overlap [m]
+
+
+def loadedGrain(overlap=OVERLAP, **kw):
+    """Grain between two walls after one step: (grain id, top wall id, wall force F [N], arm [m], uN [m])."""
+    g, w0, w1 = grainBetweenWalls(r=R, overlap=overlap, **kw)
+    O.run(1, True)
+    i = O.interactions[g, w1]
+    F = abs(O.forces.f(w1)[2])
+    arm = (i.geom.contactPoint - O.bodies[g].state.pos).norm()
+    return g, w1, F, arm, i.geom.penetrationDepth
+
+
+def add(engine):
+    O.engines = O.engines + [engine]
+    return engine
+
+
+@pytest.mark.parametrize('ratio', [1.01, 0.99])
+def test_grain_crushes_when_and_only_when_sigma_e_exceeds_ft(ratio):
+    g, w1, F, arm, uN = loadedGrain()
+    sigmaE = squeezedStress(F, R, arm)           # eqs. 2-3 by hand
+    assert arm == pytest.approx(R - OVERLAP, rel=1e-9)  # a wall contact point lies on the wall
+    ft = sigmaE / ratio                          # f_t = ft0 / r (eq. 4)
+    crush = add(BallastCrushEngine(ft0=ft * R, iterPeriod=1, label='crush'))
+    O.run(2, True)
+    assert crush.nChecks >= 1
+    assert crush.maxStressRatio == pytest.approx(ratio, rel=1e-9) or crush.nCrushed == 1
+    if ratio > 1:
+        assert crush.nCrushed == 1 and O.bodies[g] is None
+        e = crush.events[0]
+        assert e['kind'] == 'crush' and e['id'] == g and e['radius'] == R
+        assert e['value'] == pytest.approx(sigmaE, rel=1e-9)
+        assert e['strength'] == pytest.approx(ft, rel=1e-12)
+    else:
+        assert crush.nCrushed == 0 and O.bodies[g] is not None
+
+
+@pytest.mark.parametrize('pattern', [4, 'planar4', 6, 14])
+def test_fragments_inside_parent_without_overlap_and_ledger(pattern):
+    g, w1, F, arm, uN = loadedGrain()
+    pos = np.array(O.bodies[g].state.pos)
+    m0 = O.bodies[g].state.mass
+    crush = add(BallastCrushEngine(ft0=1.0, pattern=pattern, seed=3, iterPeriod=1))
+    O.run(1, True)
+    assert crush.nCrushed == 1
+    ids = crush.events[0]['newIds']
+    frag = [O.bodies[i] for i in ids]
+    c = np.array([f.state.pos for f in frag])
+    r = np.array([f.shape.radius for f in frag])
+    assert len(ids) == len(ballast.fragmentPattern(pattern))
+    assert np.all(np.linalg.norm(c - pos, axis=1) + r <= R * (1 + 1e-12))
+    gap = np.linalg.norm(c[:, None] - c[None], axis=2) - (r[:, None] + r[None])
+    assert np.all(gap[~np.eye(len(ids), dtype=bool)] >= -1e-12 * R)
+    kept = ballast.keptVolumeFraction(pattern)
+    assert crush.volumeLost == pytest.approx((1 - kept) * 4 / 3 * math.pi * R ** 3, rel=1e-12)
+    assert crush.massLost == pytest.approx((1 - kept) * m0, rel=1e-12)
+    # mass and inertia from each fragment's own radius and density
+    rho = O.bodies[ids[0]].material.density
+    for f in frag:
+        m = 4 / 3 * math.pi * f.shape.radius ** 3 * rho
+        assert f.state.mass == pytest.approx(m, rel=1e-12)
+        assert f.state.inertia[0] == pytest.approx(0.4 * m * f.shape.radius ** 2, rel=1e-12)
+        assert f.material.label == 'ballast'
+
+
+def test_fragments_move_with_the_parent_rigid_body_velocity():
+    g, w1, F, arm, uN = loadedGrain()
+    b = O.bodies[g]
+    v, w = np.array([0.3, -0.2, 0.0]), np.array([1.0, 2.0, 5.0])
+    b.state.vel, b.state.angVel = tuple(v), tuple(w)  # kept constant by the blocked DOFs
+    crush = add(BallastCrushEngine(ft0=1.0, pattern=14, iterPeriod=1))
+    O.run(1, True)
+    frag = [O.bodies[i] for i in crush.events[0]['newIds']]
+    m = np.array([f.state.mass for f in frag])
+    vel = np.array([f.state.vel for f in frag])
+    x = np.array([f.state.pos for f in frag])
+    parent = np.array(crush.events[0]['pos'])       # the parent's centre when it crushed
+    np.testing.assert_allclose((m[:, None] * x).sum(0) / m.sum(), parent, rtol=0, atol=1e-15)
+    np.testing.assert_allclose(vel, v + np.cross(w, x - parent), rtol=0, atol=1e-12)
+    # momentum is kept with the mass kept: centre-of-mass velocity of the fragments = parent velocity
+    np.testing.assert_allclose((m[:, None] * vel).sum(0) / m.sum(), v, rtol=0, atol=1e-12)
+    for f in frag:
+        np.testing.assert_allclose(np.array(f.state.angVel), w, atol=1e-15)
+
+
+@pytest.mark.parametrize('ratio', [1.01, 0.99])
+def test_abrasion_scales_radius_by_gamma_mass_by_gamma3(ratio):
+    g, w1, F, arm, uN = loadedGrain()
+    p0 = 3 * F / (2 * math.pi * R * uN)               # eq. 7, wall: effective radius R
+    b = O.bodies[g]
+    m0, I0 = b.state.mass, b.state.inertia[0]
+    gamma = 0.999
+    ab = add(BallastAbrasionEngine(strength=p0 / ratio, gamma=gamma, iterPeriod=1, label='abrasion'))
+    O.run(1, True)
+    assert ab.maxPressureRatio == pytest.approx(ratio, rel=1e-9) or ab.nAbraded == 1
+    if ratio < 1:
+        assert ab.nAbraded == 0 and b.shape.radius == R
+        return
+    assert ab.nAbraded == 1
+    assert b.shape.radius == pytest.approx(gamma * R, rel=1e-15)
+    assert b.state.mass == pytest.approx(gamma ** 3 * m0, rel=1e-12)
+    assert b.state.inertia[0] == pytest.approx(gamma ** 5 * I0, rel=1e-12)
+    assert ab.events[0]['value'] == pytest.approx(p0, rel=1e-9)
+    assert ab.massLost == pytest.approx((1 - gamma ** 3) * m0, rel=1e-9)
+    assert ab.volumeLost == pytest.approx((1 - gamma ** 3) * 4 / 3 * math.pi * R ** 3, rel=1e-9)
+    # The contacts' reference radius follows the radius (bodyStressTensors reads refR, not shape.radius):
+    for i in O.bodies[g].intrs():
+        assert (i.geom.refR1 if i.id1 == g else i.geom.refR2) == pytest.approx(gamma * R, rel=1e-15)
+    O.run(1, True)  # contacts still closed (overlap > (1 - gamma) R): the stress uses the new volume
+    i = O.interactions[g, w1]
+    F2, arm2 = abs(O.forces.f(w1)[2]), (i.geom.contactPoint - b.state.pos).norm()
+    S = ballast.matricesToArray(utils.bodyStressTensors())[g]
+    assert -S[2, 2] == pytest.approx(squeezedStress(F2, gamma * R, arm2), rel=1e-9)
+
+
+def test_rmin_stops_crushing_and_abrasion_equal_radius_is_eligible():
+    loadedGrain()
+    c = add(BallastCrushEngine(ft0=1.0, rMin=1.0001 * R, iterPeriod=1))
+    a = add(BallastAbrasionEngine(strength=1.0, rMin=1.0001 * R, iterPeriod=1))
+    O.run(3, True)
+    assert c.nCrushed == 0 and a.nAbraded == 0 and c.nChecks > 0 and a.nChecks > 0
+    c.rMin = R          # r >= rMin degrades
+    O.run(1, True)
+    assert c.nCrushed == 1
+    # fragments are below rMin: they never crush again, however low the strength
+    frag = c.events[0]['newIds']
+    O.run(5, True)
+    assert c.nCrushed == 1 and all(O.bodies[i] is not None for i in frag)
+
+
+def test_crushing_period_is_honoured():
+    loadedGrain()
+    dt = O.dt
+    Tc = 7.3 * dt
+    c = add(BallastCrushEngine(ft0=1e12, virtPeriod=Tc))
+    e = add(BallastCrushEngine(ft0=1e12, iterPeriod=1))
+    n = 200
+    t0 = O.time
+    O.run(n, True)
+    # PeriodicEngine's rule, by hand: fire when time - last >= Tc (last starts at 0); a first call that
+    # does not fire only sets last = time. Time advances by dt after the engines.
+    t, last, fired, first = t0, 0.0, 0, True
+    for _ in range(n):
+        if t - last >= Tc:
+            fired, last = fired + 1, t
+        elif first:
+            last = t
+        first = False
+        t += dt
+    assert c.nChecks == fired and fired > 20
+    assert e.nChecks == n
+
+
+@pytest.mark.parametrize('cls,kw,words', [
+    (BallastCrushEngine, dict(ft0=-1.0), ['BallastCrushEngine', 'ft0', '-1', '> 0']),
+    (BallastCrushEngine, dict(ft0=float('nan')), ['ft0', 'nan']),
+    (BallastCrushEngine, dict(ft0=1.0, pattern=5), ['pattern', '5']),
+    (BallastCrushEngine, dict(ft0=1.0, pattern='hex'), ['pattern', 'hex']),
+    (BallastCrushEngine, dict(ft0=1.0, rMin=-0.1), ['rMin', '-0.1']),
+    (BallastCrushEngine, dict(ft0=1.0, m=-1), ['m', '-1']),
+    (BallastCrushEngine, dict(ft0='1e5'), ['ft0', "'1e5'"]),
+    (BallastCrushEngine, dict(), ['ft0', 'required']),
+    (BallastCrushEngine, dict(ft0=1.0, ft=2.0), ['unknown', 'ft']),
+    (BallastAbrasionEngine, dict(strength=1.0, gamma=1.0), ['BallastAbrasionEngine', 'gamma', '1.0', '(0, 1)']),
+    (BallastAbrasionEngine, dict(strength=1.0, gamma=0.0), ['gamma', '0.0']),
+    (BallastAbrasionEngine, dict(strength=0.0), ['strength', '0.0']),
+    (BallastAbrasionEngine, dict(strength=1.0, adjustDt=1), ['adjustDt', 'True or False']),
+])
+def test_bad_parameters_raise_naming_engine_parameter_value(cls, kw, words):
+    with pytest.raises((ValueError, TypeError)) as e:
+        cls(**kw)
+    for w in words:
+        assert w in str(e.value), (w, str(e.value))
+
+
+def test_bad_parameter_set_later_raises_and_keeps_old_value():
+    c = BallastCrushEngine(ft0=1.0)
+    with pytest.raises(ValueError, match='ft0 = 0'):
+        c.ft0 = 0
+    assert c.ft0 == 1.0
+    with pytest.raises(AttributeError, match='output'):
+        c.nCrushed = 3
+
+
+def test_save_load_round_trip(tmp_path):
+    g, w1, F, arm, uN = loadedGrain()
+    p0 = 3 * F / (2 * math.pi * R * uN)
+    add(BallastAbrasionEngine(strength=p0 / 1.01, gamma=0.999, iterPeriod=1, label='abrasion'))
+    add(BallastCrushEngine(ft0=squeezedStress(F, R, arm) * R / 1.5, pattern=14, seed=9, iterPeriod=1,
+                           label='crush'))
+    O.run(3, True)
+    assert crush.nCrushed == 1 and abrasion.nAbraded >= 1
+    before = {n: dict(e.state()) for n, e in (('crush', crush), ('abrasion', abrasion))}
+    f = str(tmp_path / 'scene.yade.gz')
+    O.save(f)
+    O.load(f)
+    assert type(O.engines[-1]) is PyRunner          # what YADE itself gives back
+    back = restore()
+    assert sorted(type(e).__name__ for e in back) == ['BallastAbrasionEngine', 'BallastCrushEngine']
+    assert builtins.crush is O.engines[-1] and type(crush) is BallastCrushEngine
+    for name, e in (('crush', crush), ('abrasion', abrasion)):
+        s = e.state()
+        assert s['params'] == before[name]['params'] and s['outputs'] == before[name]['outputs']
+    assert crush.iterPeriod == 1 and crush.label == 'crush' and crush.pattern == 14
+    n = crush.nChecks
+    O.run(3, True)
+    assert crush.nChecks == n + 3
+
+
+def test_loaded_engine_restores_itself_at_its_next_check(tmp_path):
+    loadedGrain()
+    add(BallastCrushEngine(ft0=1e12, iterPeriod=1, label='crush'))
+    O.run(2, True)
+    f = str(tmp_path / 's.yade.gz')
+    O.save(f)
+    O.load(f)
+    O.run(2, True)
+    assert type(O.engines[-1]) is BallastCrushEngine and O.engines[-1].nChecks == 4
+    assert builtins.crush is O.engines[-1]
+
+
+def packedBox(n=4, r=0.01, E=1e8):
+    """n^3 grains settled under gravity in a box of walls; returns the box height [m]."""
+    O.reset()
+    steel, mat = steelMaterial(E=10 * E), ballastMaterial(E=E)
+    O.materials.append(steel)
+    O.materials.append(mat)
+    L = 2 * r * n
+    for axis, pos, sense in ((0, 0, 1), (0, L, -1), (1, 0, 1), (1, L, -1), (2, 0, 1)):
+        O.bodies.append(utils.wall(pos, axis=axis, sense=sense, material=steel))
+    rng = np.random.default_rng(5)
+    for i in range(n):
+        for j in range(n):
+            for k in range(n):
+                rr = r * (0.8 + 0.15 * rng.random())
+                O.bodies.append(utils.sphere(((2 * i + 1) * r, (2 * j + 1) * r, (2 * k + 1) * r), rr, material=mat))
+    O.engines = hertzEngines(gravity=(0, 0, -9.81), damping=0.4)
+    O.dt = 0.3 * utils.PWaveTimeStep()
+    for _ in range(100):
+        O.run(1000, True)
+        if utils.unbalancedForce() < 0.02:
+            break
+    return 2 * r * n
+
+
+def potentialEnergy():
+    return sum(b.state.mass * 9.81 * b.state.pos[2] for b in O.bodies if b is not None and b.dynamic)
+
+
+def test_burst_of_crushing_keeps_kinetic_energy_bounded():
+    """Energy balance: fragments inside their parents, moving with the parents' velocity, overlap their
+    neighbours less than the parents did, so a burst adds no energy. Without damping, kinetic plus
+    potential energy afterwards stays below the kinetic energy before, plus the Hertz elastic energy
+    before (2/5 Fn uN per contact), plus the potential energy of the fragments as placed. Fragments
+    0.3 % too large break this bound by 40 times the elastic energy."""
+    H = packedBox()
+    el = sum(0.4 * i.phys.normalForce.norm() * i.geom.penetrationDepth for i in O.interactions.all(True))
+    ke0 = utils.kineticEnergy()
+    O.engines[-1].damping = 0.0                       # no numerical damping to hide an explosion
+    nGrains = sum(1 for b in O.bodies if b.dynamic)
+    rSmall = min(b.shape.radius for b in O.bodies if b.dynamic)
+    # rMin above the fragment size: one burst, no cascade
+    crush = add(BallastCrushEngine(ft0=1e-3, pattern=6, rMin=0.5 * rSmall, iterPeriod=1))
+    dt0 = O.dt
+    O.run(1, True)
+    assert crush.nCrushed >= 0.9 * nGrains           # a real burst: nearly every grain is loaded
+    assert O.dt < dt0                                # eq. 5: smaller grains, smaller step
+    budget = ke0 + el + potentialEnergy()
+    excess = -budget
+    for _ in range(50):
+        O.run(20, True)
+        excess = max(excess, utils.kineticEnergy() + potentialEnergy() - budget)
+    assert excess <= 0.05 * el                      # 5 % of the elastic energy for integration error
+    for b in O.bodies:
+        if b is not None and b.dynamic:
+            x = b.state.pos
+            assert -1e-3 <= x[0] <= H + 1e-3 and -1e-3 <= x[1] <= H + 1e-3 and x[2] >= -1e-3
