@@ -1,0 +1,42 @@
+"""The set-up's promises: `import ballast` works from any directory, in Debian's /usr/bin/python3 and
+in yade, with no environment variable; a second set-up installs nothing and rebuilds nothing."""
+import os
+import subprocess
+
+import pytest
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+CLEAN_ENV = {k: v for k, v in os.environ.items() if k not in ('PYTHONPATH', 'PYTHONHOME')}
+CLEAN_ENV['OMP_NUM_THREADS'] = '1'
+
+
+def run(cmd, cwd, timeout=120):
+    return subprocess.run(cmd, cwd=cwd, env=CLEAN_ENV, capture_output=True, text=True, timeout=timeout)
+
+
+def test_import_in_debian_python_from_any_directory(tmp_path):
+    r = run(['/usr/bin/python3', '-c', 'import ballast, math; '
+             'print(ballast.__file__); print(ballast.vonMises([[1.,0,0],[0,0,0],[0,0,0]]))'], tmp_path)
+    assert r.returncode == 0, r.stderr
+    path, value = r.stdout.split()
+    assert path.startswith('/usr/local/lib/python3') and not path.startswith(ROOT)
+    assert float(value) == pytest.approx(1.0, abs=1e-15)
+
+
+def test_import_in_yade_from_any_directory(tmp_path):
+    script = tmp_path / 's.py'
+    script.write_text('import ballast\nfrom ballast.engines import BallastCrushEngine\n'
+                      'e = BallastCrushEngine(ft0=2.0)\nprint("FT0", e.ft0, ballast.__file__)\n')
+    r = run(['yade', '-n', '-x', str(script)], tmp_path)
+    assert r.returncode == 0, r.stderr
+    line = [ln for ln in r.stdout.splitlines() if ln.startswith('FT0')][0]
+    assert line.split()[1] == '2.0' and '/usr/local/lib/python3' in line
+
+
+@pytest.mark.skipif(os.geteuid() != 0, reason='set-up installs as root')
+def test_second_setup_installs_and_rebuilds_nothing(tmp_path):
+    r = run(['bash', os.path.join(ROOT, 'setup.sh')], tmp_path, timeout=600)
+    assert r.returncode == 0, r.stderr
+    assert 'installing' not in r.stdout and 'packages present' in r.stdout
+    assert 'Building CXX' not in r.stdout and 'Linking' not in r.stdout
+    assert 'Installing:' not in r.stdout        # cmake --install copies nothing that is up to date
