@@ -107,11 +107,11 @@ class _BallastEngine(PyRunner):
         O.tags[_TAG + self._key] = json.dumps(s)
 
     def eventsArray(self):
-        """events as a NumPy structured array (t, iter, id, radius, value, strength, nNew)."""
-        dt = [('t', float), ('iter', np.int64), ('id', np.int64), ('radius', float), ('value', float),
-              ('strength', float), ('nNew', np.int64)]
-        return np.array([(e['t'], e['iter'], e['id'], e['radius'], e['value'], e['strength'], len(e['newIds']))
-                         for e in self.events], dtype=dt)
+        """events as a NumPy structured array (t, iter, id, x, y, z, radius, value, strength, nNew)."""
+        dt = [('t', float), ('iter', np.int64), ('id', np.int64), ('x', float), ('y', float), ('z', float),
+              ('radius', float), ('value', float), ('strength', float), ('nNew', np.int64)]
+        return np.array([(e['t'], e['iter'], e['id'], *e['pos'], e['radius'], e['value'], e['strength'],
+                          len(e['newIds'])) for e in self.events], dtype=dt)
 
     def __str__(self):
         p = ', '.join('%s=%r' % (k, self.__dict__[k]) for k in self._params)
@@ -164,7 +164,7 @@ class BallastCrushEngine(_BallastEngine):
         'events': ([], 'one dict per crushed grain: kind, t [s], iter, id, pos [m], radius [m], value (sigma_e [Pa]), '
                        'strength (f_t [Pa]), newIds'),
         'nChecks': (0, 'checks run so far'),
-        'checkSeconds': (0.0, 'wall time spent in checks [s]'),
+        'checkSeconds': (0.0, 'wall time spent in checks, before the state is written to O.tags [s]'),
         'maxStressRatio': (0.0, 'largest sigma_e / f_t over the grains at the last check [-]'),
     }
 
@@ -225,7 +225,7 @@ class BallastAbrasionEngine(_BallastEngine):
         'events': ([], 'one dict per abrasion: kind, t [s], iter, id, pos [m], radius before [m], value (p0 [Pa]), '
                        'strength [Pa], newIds (empty)'),
         'nChecks': (0, 'checks run so far'),
-        'checkSeconds': (0.0, 'wall time spent in checks [s]'),
+        'checkSeconds': (0.0, 'wall time spent in checks, before the state is written to O.tags [s]'),
         'maxPressureRatio': (0.0, 'largest p0 / strength over the grains at the last check [-]'),
     }
 

@@ -48,6 +48,9 @@ def test_grain_crushes_when_and_only_when_sigma_e_exceeds_ft(ratio):
         assert e['kind'] == 'crush' and e['id'] == g and e['radius'] == R
         assert e['value'] == pytest.approx(sigmaE, rel=1e-9)
         assert e['strength'] == pytest.approx(ft, rel=1e-12)
+        a = crush.eventsArray()
+        assert a.shape == (1,) and a['id'][0] == g and a['nNew'][0] == 6 and a['value'][0] == e['value']
+        assert (a['x'][0], a['y'][0], a['z'][0]) == (0.0, 0.0, 0.0)   # the grain sat at the origin
     else:
         assert crush.nCrushed == 0 and O.bodies[g] is not None
 
