@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "FabricStress.hpp"
+#include "ArgumentMessage.hpp"
 #include "InputCheck.hpp"
 #include "VonMises.hpp"
 
@@ -17,15 +18,7 @@ namespace {
 const double kPi  = std::acos(-1.0);
 const double kRel = 1e-12;  // relative tolerance: a few roundings of a short sum
 
-std::string messageOf(void (*f)())
-{
-	try {
-		f();
-	} catch (const ArgumentError& e) {
-		return e.what();
-	}
-	return "";
-}
+using ballast_test::messageOf;
 
 }  // namespace
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "FragmentPattern.hpp"
+#include "ArgumentMessage.hpp"
 #include "InputCheck.hpp"
 
 using namespace ballast;
@@ -61,15 +62,7 @@ double closedFormFraction(Layout l)
 	return 0;
 }
 
-std::string messageOf(void (*f)())
-{
-	try {
-		f();
-	} catch (const ArgumentError& e) {
-		return e.what();
-	}
-	return "";
-}
+using ballast_test::messageOf;
 
 }  // namespace
 

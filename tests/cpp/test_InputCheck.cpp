@@ -7,22 +7,14 @@
 #include <random>
 #include <string>
 
+#include "ArgumentMessage.hpp"
 #include "InputCheck.hpp"
 
 using namespace ballast;
 
 namespace {
 
-// The message of the ArgumentError thrown by f, or "" when nothing is thrown.
-template <class F> std::string messageOf(F f)
-{
-	try {
-		f();
-	} catch (const ArgumentError& e) {
-		return e.what();
-	}
-	return "";
-}
+using ballast_test::messageOf;
 
 }  // namespace
 
