@@ -255,7 +255,7 @@ class Oedometer:
 	PACKING_KEYS = ('seed', 'diameter', 'height', 'dMin', 'dMax', 'segments', 'young', 'poisson', 'friction', 'density',
 	                'steelYoungRatio', 'steelPoisson', 'steelFriction', 'steelDensity', 'prepYoung', 'prepDamping',
 	                'depTime', 'vibAcc', 'vibFreq', 'vibTime')
-	PACKING_VERSION = 1
+	PACKING_VERSION = 2  # bump whenever the preparation changes: stored packings of older versions are not reused
 	STIFFEN_TIME = 0.01  # [s] simulated time over which the soft preparation modulus is raised to young
 	SERVO_PERIOD = 4  # [steps] between updates of the plate velocity
 	SERVO_GAIN = 0.3  # [-] fraction of the force error the plate corrects per update, with the plate contacts' stiffness
