@@ -26,7 +26,7 @@ import sys
 # Results of summary.json carried into the tables; (key, unit)
 RESULTS = [('peakForce', 'N'), ('deltaAtPeak', 'm'), ('deltaMax', 'm'), ('deltaFinal', 'm'), ('nCrushed', '-'),
            ('nAbraded', '-'), ('volumeLost', 'm^3'), ('massLost', 'kg'), ('massInitial', 'kg'), ('nGrainsInitial', '-'),
-           ('porosity0', '-'), ('wallSeconds', 's'), ('steps', '-')]
+           ('porosity0', '-'), ('wallSeconds', 's'), ('cpuSeconds', 's'), ('steps', '-')]
 STATS = ['deltaAtPeak', 'deltaMax', 'peakForce', 'nCrushed', 'nAbraded', 'massLost', 'wallSeconds']
 LABELS = {'f': 'loading frequency f [Hz]', 'Tc': 'crushing period $T_c$ [s]', 'rMin': '$r_{min}$ [m]', 'ft0': '$f_{t0}$ [Pa m]',
           'gamma': r'reduction factor $\gamma$ [-]', 'pattern': 'replacement pattern'}
