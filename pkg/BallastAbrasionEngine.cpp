@@ -1,6 +1,7 @@
 #include "BallastAbrasionEngine.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "HertzPressure.hpp"
@@ -35,6 +36,22 @@ void evaluateAbrasion(const AbrasionParameters& p, long n, const double* radii, 
 	}
 	for (long g = 0; g < n; ++g)
 		abrade[g] = radii[g] >= p.rMin && p0max[g] > p.strength;  // eq. 6
+}
+
+void abrasionPressureBound(long n, const double* traces, const double* radii, double rSmall, double EstarMax,
+                           double* bound)
+{
+	requirePositive("rSmall", rSmall);
+	requirePositive("EstarMax", EstarMax);
+	for (long g = 0; g < n; ++g) {
+		const double r = radii[g];
+		requirePositive("radii[" + std::to_string(g) + "]", r);
+		requireFinite("traces[" + std::to_string(g) + "]", traces[g]);
+		const double V    = 4.0 / 3.0 * M_PI * r * r * r;
+		const double Fmax = 2.0 * std::fabs(traces[g]) * V / r;  // largest single normal force
+		const double Rmin = r * rSmall / (r + rSmall);            // smallest effective radius
+		bound[g]          = hertzPressureFromForce(Fmax, Rmin, EstarMax);
+	}
 }
 
 }  // namespace ballast

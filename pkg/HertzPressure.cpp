@@ -25,4 +25,22 @@ double hertzPressure(double Fn, double R1, double R2, double uN)
 	return 3.0 * Fn / (2.0 * M_PI * R * uN);  // a^2 = R uN
 }
 
+double contactModulus(double E1, double nu1, double E2, double nu2)
+{
+	requirePositive("E1", E1);
+	requirePositive("E2", E2);
+	for (double nu : {nu1, nu2})
+		if (!(nu >= -1 && nu < 0.5)) throw ArgumentError("nu1, nu2: expected Poisson ratios in [-1, 0.5), got " + formatValue(nu));
+	return 1.0 / ((1 - nu1 * nu1) / E1 + (1 - nu2 * nu2) / E2);
+}
+
+double hertzPressureFromForce(double Fn, double R, double Estar)
+{
+	requireFinite("Fn", Fn);
+	requirePositive("R", R);
+	requirePositive("Estar", Estar);
+	if (Fn <= 0) return 0.0;
+	return std::cbrt(6.0 * Fn * Estar * Estar / (M_PI * M_PI * M_PI * R * R));
+}
+
 }  // namespace ballast

@@ -257,6 +257,31 @@ bp::tuple py_abrasionCheck(const bp::object& radii, const bp::object& grain1, co
 	return bp::make_tuple(p0, flag);
 }
 
+np::ndarray py_abrasionBound(const bp::object& stresses, const bp::object& radii, double rSmall, double EstarMax)
+{
+	np::ndarray s = asDoubles(stresses, "stresses");
+	np::ndarray r = asDoubles(radii, "radii");
+	const long  n = requireShape(r, "radii", {-1}, "a 1-d array");
+	requireShape(s, "stresses", {n, 3, 3}, "an (" + std::to_string(n) + ",3,3) array, one tensor per radius");
+	std::vector<double> tr(n);
+	for (long g = 0; g < n; ++g) tr[g] = dptr(s)[9 * g] + dptr(s)[9 * g + 4] + dptr(s)[9 * g + 8];
+	np::ndarray bound = emptyDoubles({n});
+	abrasionPressureBound(n, tr.data(), dptr(r), rSmall, EstarMax, wptr(bound));
+	return bound;
+}
+
+bp::object py_contactModulus(const bp::object& E1, const bp::object& nu1, const bp::object& E2, const bp::object& nu2)
+{
+	return elementwise({{"E1", E1}, {"nu1", nu1}, {"E2", E2}, {"nu2", nu2}},
+	                   [](const double* x) { return contactModulus(x[0], x[1], x[2], x[3]); });
+}
+
+bp::object py_hertzPressureFromForce(const bp::object& Fn, const bp::object& R, const bp::object& Estar)
+{
+	return elementwise({{"Fn", Fn}, {"R", R}, {"Estar", Estar}},
+	                   [](const double* x) { return hertzPressureFromForce(x[0], x[1], x[2]); });
+}
+
 // ---------------------------------------------------------------- fragments (Fig. 1)
 Layout toLayout(const bp::object& pattern)
 {
@@ -379,6 +404,16 @@ BOOST_PYTHON_MODULE(_ballast)
 	        "Abrasion decision for all grains (eq. 6 with eq. 7): radii (N,) [m]; per contact (M,): grain1, grain2 the grain\n"
 	        "index of each side or -1, Fn [N], R1, R2 [m] (0 = wall), uN [m]; strength [Pa]; rMin [m].\n"
 	        "Returns (p0max (N,) [Pa], abrade (N,) bool).");
+	bp::def("abrasionBound", py_abrasionBound, (bp::arg("stresses"), "radii", "rSmall", "EstarMax"),
+	        "Upper bound of p0 (eq. 7) over all contacts of each grain from its fabric stress alone, for Hertzian\n"
+	        "contacts: stresses (N,3,3) [Pa] (eq. 3), radii (N,) [m], rSmall the smallest sphere radius a grain may\n"
+	        "touch [m], EstarMax the largest contact modulus [Pa]. Returns (N,) [Pa]; a grain whose bound is at\n"
+	        "most the strength cannot abrade.");
+	bp::def("contactModulus", py_contactModulus, (bp::arg("E1"), "nu1", "E2", "nu2"),
+	        "Hertz contact modulus E* = 1 / ((1 - nu1^2)/E1 + (1 - nu2^2)/E2) [Pa]; scalars or arrays.");
+	bp::def("hertzPressureFromForce", py_hertzPressureFromForce, (bp::arg("Fn"), "R", "Estar"),
+	        "Eq. 7 on a Hertzian contact from the force alone: (6 Fn E*^2 / (pi^3 R^2))^(1/3) [Pa]; Fn [N],\n"
+	        "R effective radius [m], Estar contact modulus [Pa]; scalars or arrays. Fn <= 0 gives 0.");
 	bp::def("fragmentPattern", py_fragmentPattern, (bp::arg("pattern")),
 	        "Fragments of a unit parent at the origin as an (n,4) array [x,y,z,r]: pattern 4 (tetra4), 6 (octa6),\n"
 	        "14 (fill14), or the names 'tetra4', 'planar4', 'octa6', 'fill14'.");

@@ -5,10 +5,12 @@ railway ballast").
 The physics lives in the C++ core ``ballast._ballast`` (arrays in, arrays out); this package
 re-exports it. The YADE engines are in :mod:`ballast.engines` and need a running YADE.
 """
-from ._ballast import (abrasionCheck, crushCheck, effectiveRadius, fabricStress, fragmentPattern,
-                       grainStresses, hertzPressure, keptVolumeFraction, matricesToArray, patternName,
-                       placeFragments, principalStresses, randomRotation, sizeStrength, vonMises)
+from ._ballast import (abrasionBound, abrasionCheck, contactModulus, crushCheck, effectiveRadius, fabricStress,
+                       fragmentPattern, grainStresses, hertzPressure, hertzPressureFromForce, keptVolumeFraction,
+                       matricesToArray, patternName, placeFragments, principalStresses, randomRotation,
+                       sizeStrength, vonMises)
 
-__all__ = ['abrasionCheck', 'crushCheck', 'effectiveRadius', 'fabricStress', 'fragmentPattern',
-           'grainStresses', 'hertzPressure', 'keptVolumeFraction', 'matricesToArray', 'patternName',
-           'placeFragments', 'principalStresses', 'randomRotation', 'sizeStrength', 'vonMises']
+__all__ = ['abrasionBound', 'abrasionCheck', 'contactModulus', 'crushCheck', 'effectiveRadius', 'fabricStress',
+           'fragmentPattern', 'grainStresses', 'hertzPressure', 'hertzPressureFromForce', 'keptVolumeFraction',
+           'matricesToArray', 'patternName', 'placeFragments', 'principalStresses', 'randomRotation',
+           'sizeStrength', 'vonMises']

@@ -25,7 +25,7 @@ from yade.wrapper import PyRunner
 
 from . import _ballast, harvest
 from .params import (Param, anyInt, boolean, docTable, intNonNegative, nonNegative, openUnit, pattern,
-                     positive, validate)
+                     positive, positiveInt, unitInterval, validate)
 
 # PyRunner's (PeriodicEngine's) own settings, passed through unchanged.
 _PERIODIC = ('iterPeriod', 'virtPeriod', 'realPeriod', 'nDo', 'initRun', 'dead', 'label', 'firstIterRun',
@@ -217,6 +217,15 @@ class BallastAbrasionEngine(_BallastEngine):
                           'pressure p0 of eq. 7 with it; kept apart from ft0, which is in Pa m)', positive,
                           'a finite number > 0'),
         'gamma': Param(0.9, '-', 'radius reduction factor: r_new = gamma r_old', openUnit, 'a number in (0, 1)'),
+        'prefilter': Param(True, '-', 'read only the contacts of grains whose fabric-stress bound on p0 exceeds the '
+                           'strength (ballast.abrasionBound; same decisions, exact for Hertz-Mindlin contacts); it '
+                           'stays off when the contact law is not Hertzian or a full check finds the bound broken',
+                           boolean, 'True or False'),
+        'verifyPeriod': Param(50, '-', 'with the prefilter, every verifyPeriod-th check reads all contacts anyway '
+                              'and checks the bound against them', positiveInt, 'an integer >= 1'),
+        'maxCandidates': Param(0.25, '-', 'with the prefilter, when more than this fraction of the grains are '
+                               'candidates all contacts are read in one pass instead (cheaper than grain by grain)',
+                               unitInterval, 'a number in [0, 1]'),
     }, **_common())
     _outputs = {
         'nAbraded': (0, 'abrasion events so far'),
@@ -226,16 +235,61 @@ class BallastAbrasionEngine(_BallastEngine):
                        'strength [Pa], newIds (empty)'),
         'nChecks': (0, 'checks run so far'),
         'checkSeconds': (0.0, 'wall time spent in checks, before the state is written to O.tags [s]'),
-        'maxPressureRatio': (0.0, 'largest p0 / strength over the grains at the last check [-]'),
+        'maxPressureRatio': (0.0, 'largest p0 / strength over the contacts read at the last check [-] (with the '
+                                  'prefilter, the contacts not read are proven below 1)'),
+        'prefilterActive': (False, 'whether the last check used the prefilter'),
+        'prefilterNote': ('', 'why the prefilter is off, if it is'),
+        'nCandidates': (0, 'grains whose bound exceeded the strength at the last check (their contacts were read)'),
+        'contactsRead': (0, 'contacts read from YADE so far, over all checks'),
+        'nVerified': (0, 'full checks that confirmed the bound'),
     }
 
     def _summary(self):
         return 'nAbraded=%d volumeLost=%.4g m^3 massLost=%.4g kg' % (self.nAbraded, self.volumeLost, self.massLost)
 
+    def _contacts(self, tab, ids, radii):
+        """Contacts to evaluate: all, or with the prefilter those of grains whose bound exceeds the
+        strength; a full read now and then verifies the bound. Returns (id1, id2, Fn, uN)."""
+        d = self.__dict__
+        d['nCandidates'] = len(ids)
+        if not self.prefilter or d['prefilterNote']:
+            d['prefilterActive'] = False
+            if not self.prefilter:
+                d['prefilterNote'] = ''
+            return harvest.contacts()
+        Estar, why = harvest.hertzContacts()
+        if why:
+            d['prefilterActive'], d['prefilterNote'] = False, why
+            return harvest.contacts()
+        rs = tab.radiusById[tab.radiusById > 0]
+        bound = _ballast.abrasionBound(harvest.stresses(ids), radii, float(rs.min()), Estar)
+        cand = np.flatnonzero((bound > self.strength) & (radii >= self.rMin))
+        d['prefilterActive'], d['nCandidates'] = True, len(cand)
+        if d['nVerified'] == 0 or self.nChecks % self.verifyPeriod == 0:
+            c = harvest.contacts()
+            index = np.full(len(tab.radiusById), -1, dtype=np.int64)
+            index[ids] = np.arange(len(ids))
+            p0, _ = _ballast.abrasionCheck(radii, index[c[0]], index[c[1]], c[2], tab.radiusById[c[0]],
+                                           tab.radiusById[c[1]], c[3], self.strength, 0.0)
+            bad = np.flatnonzero(p0 > bound * (1 + 1e-9))
+            if len(bad):
+                k = bad[np.argmax(p0[bad] / bound[bad])]
+                d['prefilterActive'] = False
+                d['prefilterNote'] = ('bound broken at iter %d: grain %d has p0 = %.4g Pa above its bound %.4g Pa; '
+                                      'the prefilter is off from now on' % (O.iter, ids[k], p0[k], bound[k]))
+                print('BallastAbrasionEngine: ' + d['prefilterNote'])
+            elif np.any(c[2] > 0):
+                d['nVerified'] += 1
+            return c
+        if len(cand) > self.maxCandidates * len(ids):
+            return harvest.contacts()
+        return harvest.contactsOf(ids[cand])
+
     def _check(self, tab, ids, radii):
         if len(ids) == 0:
             return False
-        id1, id2, Fn, uN = harvest.contacts()
+        id1, id2, Fn, uN = self._contacts(tab, ids, radii)
+        self.__dict__['contactsRead'] += len(id1)
         index = np.full(len(tab.radiusById), -1, dtype=np.int64)
         index[ids] = np.arange(len(ids))
         p0, abrade = _ballast.abrasionCheck(radii, index[id1], index[id2], Fn, tab.radiusById[id1],

@@ -7,7 +7,9 @@
 * Fabric stresses come from ``utils.bodyStressTensors()`` (YADE's C++ Love-Weber stress per body,
   eq. 3), converted to one NumPy array in C++ (``ballast.matricesToArray``).
 * Contact data for abrasion (normal force, overlap) has no C++ accessor in YADE 2023.02a; it is read
-  in one list comprehension over the real interactions.
+  in one list comprehension, over all real interactions (:func:`contacts`) or only over those of a
+  few bodies (:func:`contactsOf`) when a bound has ruled the others out.
+* The stress tensors of one step are cached, so two engines checking at the same step read them once.
 """
 import numpy as np
 from yade import O, utils
@@ -93,16 +95,65 @@ def refresh():
     _table = None
 
 
+_stressCache = (None, None)  # ((O.iter, scene signature), all bodies' tensors)
+
+
 def stresses(ids):
     """Fabric stress tensors (eq. 3) of the bodies ids, (n,3,3) [Pa], compression negative."""
-    return _ballast.matricesToArray(utils.bodyStressTensors())[ids]
+    global _stressCache
+    key = (O.iter, _signature(), O.interactions.countReal())
+    if _stressCache[0] != key:
+        _stressCache = (key, _ballast.matricesToArray(utils.bodyStressTensors()))
+    return _stressCache[1][ids]
 
 
-def contacts():
-    """Real interactions as arrays: id1, id2 (int64), Fn [N] (compression positive), uN [m]."""
-    rows = [(i.id1, i.id2, i.phys.normalForce.dot(i.geom.normal), i.geom.penetrationDepth)
-            for i in O.interactions.all(True)]
+def _arrays(rows):
     if not rows:
         return np.zeros(0, np.int64), np.zeros(0, np.int64), np.zeros(0), np.zeros(0)
     a = np.array(rows)
     return a[:, 0].astype(np.int64), a[:, 1].astype(np.int64), a[:, 2], a[:, 3]
+
+
+def contacts():
+    """Real interactions as arrays: id1, id2 (int64), Fn [N] (compression positive), uN [m]."""
+    return _arrays([(i.id1, i.id2, i.phys.normalForce.dot(i.geom.normal), i.geom.penetrationDepth)
+                    for i in O.interactions.all(True)])
+
+
+def contactsOf(ids):
+    """As :func:`contacts`, for the real interactions of the bodies ids only (each contact once)."""
+    seen = {}
+    for b in ids:
+        for i in O.interactions.withBody(int(b)):
+            if i.isReal and (i.id1, i.id2) not in seen:
+                seen[(i.id1, i.id2)] = (i.id1, i.id2, i.phys.normalForce.dot(i.geom.normal), i.geom.penetrationDepth)
+    return _arrays(list(seen.values()))
+
+
+# Contact laws for which eq. 7 follows from the normal force alone (Hertz: F = 4/3 E* sqrt(R) u^1.5).
+_HERTZ_LAW, _HERTZ_IP2 = 'Law2_ScGeom_MindlinPhys_Mindlin', 'Ip2_FrictMat_FrictMat_MindlinPhys'
+
+
+def hertzContacts():
+    """(largest contact modulus E* of the scene [Pa], None) if every contact of the scene is Hertzian
+    and purely elastic in the normal direction, else (None, reason)."""
+    from yade.wrapper import InteractionLoop
+    loops = [e for e in O.engines if isinstance(e, InteractionLoop)]
+    if len(loops) != 1:
+        return None, 'expected one InteractionLoop in O.engines, found %d' % len(loops)
+    laws = [type(f).__name__ for f in loops[0].lawDispatcher.functors]
+    ip2s = loops[0].physDispatcher.functors
+    if laws != [_HERTZ_LAW] or [type(f).__name__ for f in ip2s] != [_HERTZ_IP2]:
+        return None, 'contact law %s with %s, not %s with %s alone' % (
+            '+'.join(laws), '+'.join(type(f).__name__ for f in ip2s), _HERTZ_LAW, _HERTZ_IP2)
+    law, ip2 = loops[0].lawDispatcher.functors[0], ip2s[0]
+    if getattr(law, 'includeAdhesion', False) or getattr(ip2, 'gamma', 0) != 0:
+        return None, 'adhesive Mindlin contacts (gamma or includeAdhesion set)'
+    if getattr(ip2, 'betan', None) is not None or getattr(ip2, 'en', None) is not None:
+        return None, 'viscous normal damping in the Mindlin contacts (betan or en set)'
+    mats = [(m.young, m.poisson) for m in O.materials if hasattr(m, 'young') and hasattr(m, 'poisson')]
+    if not mats:
+        return None, 'no elastic material in O.materials'
+    E, nu = np.array([m[0] for m in mats], dtype=float), np.array([m[1] for m in mats], dtype=float)
+    n = len(mats)
+    return float(np.max(_ballast.contactModulus(np.repeat(E, n), np.repeat(nu, n), np.tile(E, n), np.tile(nu, n)))), None

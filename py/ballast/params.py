@@ -47,8 +47,21 @@ def openUnit(v):
     return v
 
 
+def unitInterval(v):
+    v = _number(v)
+    if not 0 <= v <= 1:
+        raise ValueError
+    return v
+
+
 def intNonNegative(v):
     if isinstance(v, bool) or not isinstance(v, numbers.Integral) or v < 0:
+        raise ValueError
+    return int(v)
+
+
+def positiveInt(v):
+    if isinstance(v, bool) or not isinstance(v, numbers.Integral) or v < 1:
         raise ValueError
     return int(v)
 

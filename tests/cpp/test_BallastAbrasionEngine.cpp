@@ -3,12 +3,15 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <algorithm>
 #include <cstdint>
+#include <random>
 #include <limits>
 #include <string>
 #include <vector>
 
 #include "BallastAbrasionEngine.hpp"
+#include "HertzPressure.hpp"
 #include "InputCheck.hpp"
 
 using namespace ballast;
@@ -191,4 +194,80 @@ TEST(BallastAbrasionEngine, BadInputsThrow)
 	} catch (const ArgumentError& e) {
 		EXPECT_EQ(std::string(e.what()).rfind("rMin", 0), 0u) << e.what();
 	}
+}
+
+namespace {
+
+// Hertz contact by hand: the overlap of force F on effective radius R with modulus Es.
+double hertzOverlap(double F, double R, double Es) { return std::pow(3 * F / (4 * Es * std::sqrt(R)), 2.0 / 3.0); }
+
+// tr(sigma) of eq. 3 for a grain of radius r whose contacts push with F[c] at overlap u[c]:
+// the branch to the contact point is r - u/2 long and parallel to the force.
+double traceOf(double r, const std::vector<double>& F, const std::vector<double>& u)
+{
+	double s = 0;
+	for (size_t c = 0; c < F.size(); ++c) s += F[c] * (r - u[c] / 2);
+	return -s / (4.0 / 3.0 * kPi * r * r * r);  // compression negative
+}
+
+}  // namespace
+
+TEST(BallastAbrasionEngine, PressureBoundOfOneContactClosedForm)
+{
+	// One contact with the smallest sphere: the bound is eq. 7 at 2 l / r times the force, with
+	// l = r - uN/2, so bound / p0 = (2 l / r)^(1/3) exactly (just below 2^(1/3)).
+	const double r = 0.02, rs = 0.005, Es = 1.65e11, F = 4e4;
+	const double R  = r * rs / (r + rs);
+	const double uN = hertzOverlap(F, R, Es);
+	const double tr = traceOf(r, {F}, {uN});
+	double       bound;
+	abrasionPressureBound(1, &tr, &r, rs, Es, &bound);
+	const double p0 = hertzPressure(F, r, rs, uN);
+	EXPECT_NEAR(bound / p0, std::cbrt(2 * (r - uN / 2) / r), 1e-12);
+	EXPECT_GT(bound, p0);
+}
+
+TEST(BallastAbrasionEngine, PressureBoundHoldsForRandomGrains)
+{
+	// Random grains with 1-12 Hertz contacts against spheres (radius >= rSmall) or walls, moduli
+	// up to EstarMax: the bound of each grain is at least the largest p0 of eq. 7 over its contacts.
+	std::mt19937_64                        rng(12345);
+	std::uniform_real_distribution<double> U(0.0, 1.0);
+	const double                           rs = 0.004, EsMax = 2.6e11;
+	double                                 worst = 0;  // smallest bound / p0 seen
+	for (int g = 0; g < 2000; ++g) {
+		const double        r = 0.005 + 0.02 * U(rng);
+		const int           n = 1 + static_cast<int>(12 * U(rng));
+		std::vector<double> F, u, p;
+		for (int c = 0; c < n; ++c) {
+			const double other = U(rng) < 0.2 ? 0.0 : rs + 0.03 * U(rng) * U(rng);  // 0: a wall
+			const double R     = other == 0 ? r : r * other / (r + other);
+			const double Es    = EsMax * (0.3 + 0.7 * U(rng));
+			F.push_back(std::pow(10.0, 6 * U(rng)));  // 1 N ... 1 MN
+			u.push_back(hertzOverlap(F.back(), R, Es));
+			p.push_back(hertzPressure(F.back(), r, other, u.back()));
+		}
+		const double tr = traceOf(r, F, u);
+		double       bound;
+		abrasionPressureBound(1, &tr, &r, rs, EsMax, &bound);
+		const double pmax = *std::max_element(p.begin(), p.end());
+		EXPECT_GE(bound, pmax) << "grain " << g;
+		worst = std::min(worst == 0 ? bound / pmax : worst, bound / pmax);
+	}
+	EXPECT_GE(worst, 1.0);
+	EXPECT_LT(worst, 1.4);  // not vacuous: the tightest possible is 2^(1/3) = 1.26 (one contact, l = r)
+}
+
+TEST(BallastAbrasionEngine, PressureBoundBadInputs)
+{
+	const double tr = -1e6, r = 0.01, nan = std::numeric_limits<double>::quiet_NaN();
+	double       b;
+	EXPECT_THROW(abrasionPressureBound(1, &tr, &r, 0.0, 1e11, &b), ArgumentError);
+	EXPECT_THROW(abrasionPressureBound(1, &tr, &r, 0.01, 0.0, &b), ArgumentError);
+	const double r0 = 0.0;
+	EXPECT_THROW(abrasionPressureBound(1, &tr, &r0, 0.01, 1e11, &b), ArgumentError);
+	EXPECT_THROW(abrasionPressureBound(1, &nan, &r, 0.01, 1e11, &b), ArgumentError);
+	const double zero = 0.0;
+	abrasionPressureBound(1, &zero, &r, 0.01, 1e11, &b);
+	EXPECT_EQ(b, 0.0);  // an unloaded grain cannot abrade
 }

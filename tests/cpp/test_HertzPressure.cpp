@@ -104,3 +104,35 @@ TEST(HertzPressure, BadInputsThrow)
 	EXPECT_THROW(hertzPressure(0.0, -0.01, 0.01, 0.0), ArgumentError);
 	EXPECT_THROW(hertzPressure(std::numeric_limits<double>::infinity(), 0.01, 0.01, 1e-6), ArgumentError);
 }
+
+TEST(HertzPressure, ContactModulusClosedForm)
+{
+	// Ballast on ballast (E = 3e11, nu = 0.3): E* = E / (2 (1 - nu^2)); ballast on steel (10 E, 0.25).
+	const double E = 3e11;
+	EXPECT_NEAR(contactModulus(E, 0.3, E, 0.3), E / (2 * (1 - 0.09)), kRel * E);
+	const double mixed = 1.0 / ((1 - 0.09) / E + (1 - 0.0625) / (10 * E));
+	EXPECT_NEAR(contactModulus(E, 0.3, 10 * E, 0.25), mixed, kRel * mixed);
+	EXPECT_NEAR(contactModulus(10 * E, 0.25, E, 0.3), mixed, kRel * mixed);
+	EXPECT_THROW(contactModulus(0.0, 0.3, E, 0.3), ArgumentError);
+	EXPECT_THROW(contactModulus(E, 0.5, E, 0.3), ArgumentError);
+}
+
+TEST(HertzPressure, FromForceEqualsEq7OnAHertzContact)
+{
+	// Hertz law F = 4/3 E* sqrt(R) uN^(3/2): the overlap of a force, then eq. 7 from (F, uN) must
+	// equal the force-only form (6 F E*^2 / (pi^3 R^2))^(1/3).
+	const double Es = 1.65e11;
+	for (double R : {4e-3, 1.1e-2, 2.2e-2})
+		for (double F : {1.0, 3e3, 2e5}) {
+			const double uN = std::pow(3 * F / (4 * Es * std::sqrt(R)), 2.0 / 3.0);
+			const double p0 = hertzPressure(F, R, 0.0, uN);
+			EXPECT_NEAR(hertzPressureFromForce(F, R, Es), p0, 1e-12 * p0) << "R=" << R << " F=" << F;
+		}
+	// p0 grows as F^(1/3): eight times the force, twice the pressure
+	EXPECT_NEAR(hertzPressureFromForce(8e3, 0.01, Es), 2 * hertzPressureFromForce(1e3, 0.01, Es), 1e-12 * 1e10);
+	EXPECT_EQ(hertzPressureFromForce(0.0, 0.01, Es), 0.0);
+	EXPECT_EQ(hertzPressureFromForce(-5.0, 0.01, Es), 0.0);
+	EXPECT_THROW(hertzPressureFromForce(1.0, 0.0, Es), ArgumentError);
+	EXPECT_THROW(hertzPressureFromForce(1.0, 0.01, -1.0), ArgumentError);
+	EXPECT_THROW(hertzPressureFromForce(std::numeric_limits<double>::quiet_NaN(), 0.01, Es), ArgumentError);
+}

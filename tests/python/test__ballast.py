@@ -101,6 +101,42 @@ def test_abrasion_check_max_over_contacts_both_sides():
     assert list(ab) == [p0[0] > strength, p0[1] > strength]
 
 
+def test_hertz_pressure_from_force_and_contact_modulus():
+    # ballast-steel contact modulus by hand; eq. 7 from (F, uN) on a Hertz contact = the force-only form
+    E, nu = 3e11, 0.3
+    Es = ballast.contactModulus(E, nu, 10 * E, 0.25)
+    assert Es == pytest.approx(1 / ((1 - nu**2) / E + (1 - 0.25**2) / (10 * E)), rel=1e-14)
+    F, R = np.array([10.0, 1e4, 1e6]), 0.012
+    uN = (3 * F / (4 * Es * math.sqrt(R))) ** (2 / 3)
+    np.testing.assert_allclose(ballast.hertzPressureFromForce(F, R, Es), ballast.hertzPressure(F, R, 0.0, uN), rtol=1e-12)
+
+
+def test_abrasion_bound_of_grains_with_hertz_contacts():
+    # grain 0 (r 0.02): one contact with the smallest sphere (0.005); grain 1 (r 0.01): a wall and a
+    # sphere of 0.03; grain 2 unloaded. Stress traces built by hand from eq. 3 with l = r - uN/2.
+    Es, rs = 1.6e11, 0.005
+    radii = np.array([0.02, 0.01, 0.015])
+
+    def contact(F, r, other):
+        R = r if other == 0 else r * other / (r + other)
+        u = (3 * F / (4 * Es * math.sqrt(R))) ** (2 / 3)
+        return F * (r - u / 2), ballast.hertzPressure(F, r, other, u)
+
+    c0 = [contact(5e4, 0.02, rs)]
+    c1 = [contact(2e4, 0.01, 0.0), contact(8e4, 0.01, 0.03)]
+    sig = np.zeros((3, 3, 3))
+    for g, cs in ((0, c0), (1, c1)):
+        sig[g] = -np.eye(3) * sum(fl for fl, _ in cs) / (3 * 4 / 3 * math.pi * radii[g]**3)  # trace = -sum F l / V
+    b = ballast.abrasionBound(sig, radii, rs, Es)
+    assert b[0] >= c0[0][1] and b[1] >= max(p for _, p in c1)
+    assert b[0] / c0[0][1] == pytest.approx((2 * c0[0][0] / 5e4 / 0.02) ** (1 / 3), rel=1e-12)  # (2 l / r)^(1/3)
+    assert b[2] == 0.0
+    with pytest.raises(TypeError, match='stresses'):
+        ballast.abrasionBound(np.zeros((2, 3, 3)), radii, rs, Es)
+    with pytest.raises(ValueError, match='rSmall'):
+        ballast.abrasionBound(sig, radii, 0.0, Es)
+
+
 @pytest.mark.parametrize('pattern,n,kept', [
     (4, 4, 4 * (math.sqrt(2 / 3) / (1 + math.sqrt(2 / 3))) ** 3),
     ('planar4', 4, 4 / (1 + math.sqrt(2)) ** 3),

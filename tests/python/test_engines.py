@@ -185,6 +185,9 @@ def test_crushing_period_is_honoured():
     (BallastAbrasionEngine, dict(strength=1.0, gamma=0.0), ['gamma', '0.0']),
     (BallastAbrasionEngine, dict(strength=0.0), ['strength', '0.0']),
     (BallastAbrasionEngine, dict(strength=1.0, adjustDt=1), ['adjustDt', 'True or False']),
+    (BallastAbrasionEngine, dict(strength=1.0, prefilter='yes'), ['prefilter', "'yes'", 'True or False']),
+    (BallastAbrasionEngine, dict(strength=1.0, verifyPeriod=0), ['verifyPeriod', '0', '>= 1']),
+    (BallastAbrasionEngine, dict(strength=1.0, maxCandidates=1.5), ['maxCandidates', '1.5', '[0, 1]']),
 ])
 def test_bad_parameters_raise_naming_engine_parameter_value(cls, kw, words):
     with pytest.raises((ValueError, TypeError)) as e:
@@ -239,8 +242,9 @@ def test_loaded_engine_restores_itself_at_its_next_check(tmp_path):
     assert builtins.crush is O.engines[-1]
 
 
-def packedBox(n=4, r=0.01, E=1e8):
-    """n^3 grains settled under gravity in a box of walls; returns the box height [m]."""
+def packedBox(n=4, r=0.01, E=1e8, engines=None):
+    """n^3 grains settled under gravity in a box of walls (Hertz-Mindlin contacts unless engines are
+    given); returns the box height [m]."""
     O.reset()
     steel, mat = steelMaterial(E=10 * E), ballastMaterial(E=E)
     O.materials.append(steel)
@@ -254,7 +258,7 @@ def packedBox(n=4, r=0.01, E=1e8):
             for k in range(n):
                 rr = r * (0.8 + 0.15 * rng.random())
                 O.bodies.append(utils.sphere(((2 * i + 1) * r, (2 * j + 1) * r, (2 * k + 1) * r), rr, material=mat))
-    O.engines = hertzEngines(gravity=(0, 0, -9.81), damping=0.4)
+    O.engines = engines or hertzEngines(gravity=(0, 0, -9.81), damping=0.4)
     O.dt = 0.3 * utils.PWaveTimeStep()
     for _ in range(100):
         O.run(1000, True)
@@ -295,3 +299,108 @@ def test_burst_of_crushing_keeps_kinetic_energy_bounded():
         if b is not None and b.dynamic:
             x = b.state.pos
             assert -1e-3 <= x[0] <= H + 1e-3 and -1e-3 <= x[1] <= H + 1e-3 and x[2] >= -1e-3
+
+
+def fullPressures(strength=1.0):
+    """Largest p0 of eq. 7 per grain over all its contacts, read one by one: (grain ids, p0max)."""
+    ids = np.array([b.id for b in O.bodies if b is not None and b.dynamic])
+    p = dict.fromkeys(ids.tolist(), 0.0)
+    for i in O.interactions.all(True):
+        r1, r2 = (O.bodies[k].shape.radius if O.bodies[k].dynamic else 0.0 for k in (i.id1, i.id2))
+        p0 = ballast.hertzPressure(i.phys.normalForce.dot(i.geom.normal), r1, r2, i.geom.penetrationDepth)
+        for k in (i.id1, i.id2):
+            if k in p:
+                p[k] = max(p[k], p0)
+    return ids, np.array([p[k] for k in ids])
+
+
+def abrasionRun(prefilter, checks=3, **kw):
+    """From the saved box: abrasion checked every step with or without the prefilter; the engine."""
+    O.loadTmp('box')
+    ab = add(BallastAbrasionEngine(strength=kw.pop('strength'), gamma=0.9, iterPeriod=1, prefilter=prefilter,
+                                   verifyPeriod=1000, **kw))
+    O.run(checks, True)
+    return ab
+
+
+def test_abrasion_bound_holds_in_a_yade_hertz_packing():
+    """ballast.abrasionBound on YADE's own fabric stresses (utils.bodyStressTensors) bounds eq. 7 at
+    every contact of a settled Hertz-Mindlin packing, and is not vacuous."""
+    packedBox()
+    O.run(1, True)
+    ids, p0 = fullPressures()
+    S = ballast.matricesToArray(utils.bodyStressTensors())[ids]
+    radii = np.array([O.bodies[int(k)].shape.radius for k in ids])
+    mats = [m for m in O.materials]
+    Es = max(ballast.contactModulus(a.young, a.poisson, b.young, b.poisson) for a in mats for b in mats)
+    bound = ballast.abrasionBound(S, radii, float(radii.min()), Es)
+    assert np.all(bound >= p0)
+    ratio = bound[p0 > 0] / p0[p0 > 0]
+    # not vacuous: the bound sums ~6 contacts (6^(1/3) = 1.8), takes the ballast-steel modulus
+    # ((E*_steel / E*_ballast)^(2/3) = 1.5) and the smallest partner (~1.5): about 4-8 here
+    assert 1.26 < ratio.min() < 10
+
+
+def test_prefilter_gives_the_same_abrasion_and_reads_fewer_contacts():
+    packedBox()
+    O.run(1, True)
+    ids, p0 = fullPressures()
+    O.saveTmp('box')
+    # near the largest pressure: grains abrade, and nearly all are candidates (the bound is ~6x loose);
+    # maxCandidates=1 makes the prefilter read them grain by grain anyway
+    strength = 0.99 * float(p0.max())
+    full = abrasionRun(False, strength=strength)
+    fast = abrasionRun(True, strength=strength, maxCandidates=1.0)
+    assert full.nAbraded > 0
+    key = [(e['iter'], e['id'], e['radius']) for e in full.events]
+    assert [(e['iter'], e['id'], e['radius']) for e in fast.events] == key
+    assert [e['value'] for e in fast.events] == pytest.approx([e['value'] for e in full.events], rel=1e-12)
+    assert fast.prefilterActive and fast.prefilterNote == '' and fast.nVerified == 1
+    # a strength above most bounds: few candidates, fewer contacts read, the same (no) abrasion
+    S = ballast.matricesToArray(utils.bodyStressTensors())[ids]
+    radii = np.array([O.bodies[int(k)].shape.radius for k in ids])
+    Es = max(ballast.contactModulus(a.young, a.poisson, b.young, b.poisson) for a in O.materials for b in O.materials)
+    bound = ballast.abrasionBound(S, radii, float(radii.min()), Es)
+    strength = float(np.quantile(bound, 0.9))
+    full = abrasionRun(False, strength=strength)
+    fast = abrasionRun(True, strength=strength)
+    assert fast.prefilterActive and 0 < fast.nCandidates <= 0.25 * len(ids)
+    assert fast.nAbraded == full.nAbraded and fast.maxPressureRatio <= full.maxPressureRatio
+    assert fast.contactsRead < 0.6 * full.contactsRead   # a full read at check 1 (verification), then few
+
+
+def test_prefilter_stays_off_for_a_linear_contact_law():
+    from yade.wrapper import (Ig2_Sphere_Sphere_ScGeom, Ig2_Wall_Sphere_ScGeom, InteractionLoop,
+                              Ip2_FrictMat_FrictMat_FrictPhys, Law2_ScGeom_FrictPhys_CundallStrack)
+    eng = hertzEngines(gravity=(0, 0, -9.81), damping=0.4)
+    eng = [e if not isinstance(e, InteractionLoop) else InteractionLoop(
+        [Ig2_Sphere_Sphere_ScGeom(), Ig2_Wall_Sphere_ScGeom()], [Ip2_FrictMat_FrictMat_FrictPhys()],
+        [Law2_ScGeom_FrictPhys_CundallStrack()]) for e in eng]
+    packedBox(engines=eng)
+    O.run(1, True)
+    _, p0 = fullPressures()
+    O.saveTmp('box')
+    strength = float(np.quantile(p0, 0.9))
+    full = abrasionRun(False, strength=strength)
+    fast = abrasionRun(True, strength=strength)
+    assert not fast.prefilterActive and 'Law2_ScGeom_FrictPhys_CundallStrack' in fast.prefilterNote
+    assert [(e['iter'], e['id']) for e in fast.events] == [(e['iter'], e['id']) for e in full.events]
+    assert fast.nAbraded > 0
+
+
+def test_prefilter_switches_itself_off_when_a_full_read_breaks_the_bound():
+    """Stiffer contacts than the materials say (as while a script rescales kno by hand): the same
+    force at a smaller overlap, so eq. 7 exceeds the Hertz bound; the first check's full read sees it."""
+    packedBox()
+    O.run(1, True)
+    for i in O.interactions.all(True):
+        i.phys.kno *= 1e3
+    O.run(1, True)
+    _, p0 = fullPressures()
+    O.saveTmp('box')
+    strength = float(np.quantile(p0, 0.9))
+    full = abrasionRun(False, strength=strength)
+    fast = abrasionRun(True, strength=strength)
+    assert not fast.prefilterActive and 'bound broken' in fast.prefilterNote
+    assert [(e['iter'], e['id']) for e in fast.events] == [(e['iter'], e['id']) for e in full.events]
+    assert fast.nAbraded > 0
