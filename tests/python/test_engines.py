@@ -369,6 +369,19 @@ def test_prefilter_gives_the_same_abrasion_and_reads_fewer_contacts():
     assert fast.contactsRead < 0.6 * full.contactsRead   # a full read at check 1 (verification), then few
 
 
+def assertPrefilterOffWithSameAbrasion(noteWords):
+    """From the current scene: the prefilter must be off with a note containing noteWords, and the
+    events must be those of a check without it, with some grains abraded."""
+    _, p0 = fullPressures()
+    O.saveTmp('box')
+    strength = float(np.quantile(p0, 0.9))
+    full = abrasionRun(False, strength=strength)
+    fast = abrasionRun(True, strength=strength)
+    assert not fast.prefilterActive and noteWords in fast.prefilterNote
+    assert [(e['iter'], e['id']) for e in fast.events] == [(e['iter'], e['id']) for e in full.events]
+    assert fast.nAbraded > 0
+
+
 def test_prefilter_stays_off_for_a_linear_contact_law():
     from yade.wrapper import (Ig2_Sphere_Sphere_ScGeom, Ig2_Wall_Sphere_ScGeom, InteractionLoop,
                               Ip2_FrictMat_FrictMat_FrictPhys, Law2_ScGeom_FrictPhys_CundallStrack)
@@ -378,14 +391,7 @@ def test_prefilter_stays_off_for_a_linear_contact_law():
         [Law2_ScGeom_FrictPhys_CundallStrack()]) for e in eng]
     packedBox(engines=eng)
     O.run(1, True)
-    _, p0 = fullPressures()
-    O.saveTmp('box')
-    strength = float(np.quantile(p0, 0.9))
-    full = abrasionRun(False, strength=strength)
-    fast = abrasionRun(True, strength=strength)
-    assert not fast.prefilterActive and 'Law2_ScGeom_FrictPhys_CundallStrack' in fast.prefilterNote
-    assert [(e['iter'], e['id']) for e in fast.events] == [(e['iter'], e['id']) for e in full.events]
-    assert fast.nAbraded > 0
+    assertPrefilterOffWithSameAbrasion('Law2_ScGeom_FrictPhys_CundallStrack')
 
 
 def test_prefilter_switches_itself_off_when_a_full_read_breaks_the_bound():
@@ -396,11 +402,4 @@ def test_prefilter_switches_itself_off_when_a_full_read_breaks_the_bound():
     for i in O.interactions.all(True):
         i.phys.kno *= 1e3
     O.run(1, True)
-    _, p0 = fullPressures()
-    O.saveTmp('box')
-    strength = float(np.quantile(p0, 0.9))
-    full = abrasionRun(False, strength=strength)
-    fast = abrasionRun(True, strength=strength)
-    assert not fast.prefilterActive and 'bound broken' in fast.prefilterNote
-    assert [(e['iter'], e['id']) for e in fast.events] == [(e['iter'], e['id']) for e in full.events]
-    assert fast.nAbraded > 0
+    assertPrefilterOffWithSameAbrasion('bound broken')
