@@ -38,18 +38,26 @@ void evaluateAbrasion(const AbrasionParameters& p, long n, const double* radii, 
 		abrade[g] = radii[g] >= p.rMin && p0max[g] > p.strength;  // eq. 6
 }
 
-void abrasionPressureBound(long n, const double* traces, const double* radii, double rSmall, double EstarMax,
+double sphereContactBound(double maxOverlapRatio, double EstarMax)
+{
+	requireFinite("maxOverlapRatio", maxOverlapRatio);
+	requirePositive("EstarMax", EstarMax);
+	if (maxOverlapRatio <= 0) return 0.0;  // no overlapping pair of spheres (YADE gives -1)
+	return 2.0 * EstarMax / M_PI * std::sqrt(2.0 * maxOverlapRatio);
+}
+
+void abrasionPressureBound(long n, const double* traces, const double* radii, double rPartner, double EstarMax,
                            double* bound)
 {
-	requirePositive("rSmall", rSmall);
+	requireNonNegative("rPartner", rPartner);
 	requirePositive("EstarMax", EstarMax);
 	for (long g = 0; g < n; ++g) {
 		const double r = radii[g];
 		requirePositive("radii[" + std::to_string(g) + "]", r);
 		requireFinite("traces[" + std::to_string(g) + "]", traces[g]);
 		const double V    = 4.0 / 3.0 * M_PI * r * r * r;
-		const double Fmax = 2.0 * std::fabs(traces[g]) * V / r;  // largest single normal force
-		const double Rmin = r * rSmall / (r + rSmall);            // smallest effective radius
+		const double Fmax = 2.0 * std::fabs(traces[g]) * V / r;                 // largest single normal force
+		const double Rmin = rPartner == 0 ? r : r * rPartner / (r + rPartner);  // smallest effective radius
 		bound[g]          = hertzPressureFromForce(Fmax, Rmin, EstarMax);
 	}
 }

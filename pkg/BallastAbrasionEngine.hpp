@@ -23,15 +23,21 @@ void evaluateAbrasion(const AbrasionParameters& p, long n, const double* radii, 
                       const long* grain2, const double* Fn, const double* R1, const double* R2, const double* uN,
                       double* p0max, std::uint8_t* abrade);
 
-// Upper bound of p0 over all contacts of each grain, from its fabric stress alone (no contact
-// data), so that a check can skip the contacts of grains that provably cannot abrade.
-// Valid for Hertzian contacts that only push (F_N = 4/3 E* sqrt(R) u_N^(3/2) >= 0, u_N <= r):
+// Bounds on p0 (eq. 7) for Hertzian contacts that only push (F_N = 4/3 E* sqrt(R) u_N^(3/2) >= 0),
+// so that a check can skip the contacts that provably cannot abrade a grain.
+//
+// Sphere-sphere contacts, from the largest overlap ratio rho = max u_N / (2 R) of the scene
+// (YADE's utils.maxOverlapRatio(), computed in C++): eq. 7 with the Hertz law is
+//   p0 = 3 F_N / (2 pi R u_N) = (2 E* / pi) sqrt(u_N / R)  <=  (2 EstarMax / pi) sqrt(2 rho).   [Pa]
+double sphereContactBound(double maxOverlapRatio, double EstarMax);
+
+// Contacts of each grain with bodies no smaller than rPartner (0: walls and facets, R = r), from the
+// grain's fabric stress alone (no contact data):
 //   eq. 3 traced, shear being normal to the branch l = r - u_N/2:  sum_c F_N,c l_c = |tr sigma| V,
-//   l_c >= r/2                                                    =>  F_N,c <= 2 |tr sigma| V / r,
-//   eq. 7 with the Hertz law (hertzPressureFromForce), R >= r rSmall / (r + rSmall), E* <= EstarMax.
-// n grains: traces tr(sigma) [Pa], radii r [m] (V = 4/3 pi r^3); rSmall the smallest sphere radius a
-// grain may touch [m]; EstarMax the largest contact modulus of the scene [Pa]. Writes bound [Pa].
-void abrasionPressureBound(long n, const double* traces, const double* radii, double rSmall, double EstarMax,
+//   l_c >= r/2 (u_N <= r)                                        =>  F_N,c <= 2 |tr sigma| V / r,
+//   then eq. 7 with the Hertz law (hertzPressureFromForce), R >= r rPartner / (r + rPartner), E* <= EstarMax.
+// n grains: traces tr(sigma) [Pa], radii r [m] (V = 4/3 pi r^3). Writes bound [Pa].
+void abrasionPressureBound(long n, const double* traces, const double* radii, double rPartner, double EstarMax,
                            double* bound);
 
 }  // namespace ballast

@@ -257,7 +257,7 @@ bp::tuple py_abrasionCheck(const bp::object& radii, const bp::object& grain1, co
 	return bp::make_tuple(p0, flag);
 }
 
-np::ndarray py_abrasionBound(const bp::object& stresses, const bp::object& radii, double rSmall, double EstarMax)
+np::ndarray py_abrasionBound(const bp::object& stresses, const bp::object& radii, double rPartner, double EstarMax)
 {
 	np::ndarray s = asDoubles(stresses, "stresses");
 	np::ndarray r = asDoubles(radii, "radii");
@@ -266,7 +266,7 @@ np::ndarray py_abrasionBound(const bp::object& stresses, const bp::object& radii
 	std::vector<double> tr(n);
 	for (long g = 0; g < n; ++g) tr[g] = dptr(s)[9 * g] + dptr(s)[9 * g + 4] + dptr(s)[9 * g + 8];
 	np::ndarray bound = emptyDoubles({n});
-	abrasionPressureBound(n, tr.data(), dptr(r), rSmall, EstarMax, wptr(bound));
+	abrasionPressureBound(n, tr.data(), dptr(r), rPartner, EstarMax, wptr(bound));
 	return bound;
 }
 
@@ -404,11 +404,13 @@ BOOST_PYTHON_MODULE(_ballast)
 	        "Abrasion decision for all grains (eq. 6 with eq. 7): radii (N,) [m]; per contact (M,): grain1, grain2 the grain\n"
 	        "index of each side or -1, Fn [N], R1, R2 [m] (0 = wall), uN [m]; strength [Pa]; rMin [m].\n"
 	        "Returns (p0max (N,) [Pa], abrade (N,) bool).");
-	bp::def("abrasionBound", py_abrasionBound, (bp::arg("stresses"), "radii", "rSmall", "EstarMax"),
-	        "Upper bound of p0 (eq. 7) over all contacts of each grain from its fabric stress alone, for Hertzian\n"
-	        "contacts: stresses (N,3,3) [Pa] (eq. 3), radii (N,) [m], rSmall the smallest sphere radius a grain may\n"
-	        "touch [m], EstarMax the largest contact modulus [Pa]. Returns (N,) [Pa]; a grain whose bound is at\n"
-	        "most the strength cannot abrade.");
+	bp::def("abrasionBound", py_abrasionBound, (bp::arg("stresses"), "radii", "rPartner", "EstarMax"),
+	        "Upper bound of p0 (eq. 7) over the Hertzian contacts of each grain with bodies of radius >= rPartner [m]\n"
+	        "(0: walls and facets), from its fabric stress alone: stresses (N,3,3) [Pa] (eq. 3), radii (N,) [m],\n"
+	        "EstarMax the largest contact modulus [Pa]. Returns (N,) [Pa].");
+	bp::def("sphereContactBound", sphereContactBound, (bp::arg("maxOverlapRatio"), "EstarMax"),
+	        "Upper bound of p0 (eq. 7) over all Hertzian sphere-sphere contacts, (2 E*/pi) sqrt(2 rho) [Pa], from\n"
+	        "rho = max u_N / (2 R) (utils.maxOverlapRatio()) and the largest contact modulus EstarMax [Pa].");
 	bp::def("contactModulus", py_contactModulus, (bp::arg("E1"), "nu1", "E2", "nu2"),
 	        "Hertz contact modulus E* = 1 / ((1 - nu1^2)/E1 + (1 - nu2^2)/E2) [Pa]; scalars or arrays.");
 	bp::def("hertzPressureFromForce", py_hertzPressureFromForce, (bp::arg("Fn"), "R", "Estar"),

@@ -8,9 +8,9 @@ re-exports it. The YADE engines are in :mod:`ballast.engines` and need a running
 from ._ballast import (abrasionBound, abrasionCheck, contactModulus, crushCheck, effectiveRadius, fabricStress,
                        fragmentPattern, grainStresses, hertzPressure, hertzPressureFromForce, keptVolumeFraction,
                        matricesToArray, patternName, placeFragments, principalStresses, randomRotation,
-                       sizeStrength, vonMises)
+                       sizeStrength, sphereContactBound, vonMises)
 
 __all__ = ['abrasionBound', 'abrasionCheck', 'contactModulus', 'crushCheck', 'effectiveRadius', 'fabricStress',
            'fragmentPattern', 'grainStresses', 'hertzPressure', 'hertzPressureFromForce', 'keptVolumeFraction',
            'matricesToArray', 'patternName', 'placeFragments', 'principalStresses', 'randomRotation',
-           'sizeStrength', 'vonMises']
+           'sizeStrength', 'sphereContactBound', 'vonMises']

@@ -25,9 +25,14 @@ class GrainTable:
     def __init__(self):
         ids, radii, masks = [], [], []
         self.radiusById = np.zeros(len(O.bodies))
+        self.sphereMaterials, self.otherMaterials = set(), set()
         for b in O.bodies:
-            if b is None or not isinstance(b.shape, Sphere):
+            if b is None:
                 continue
+            if not isinstance(b.shape, Sphere):
+                self.otherMaterials.add(b.material.id)
+                continue
+            self.sphereMaterials.add(b.material.id)
             self.radiusById[b.id] = b.shape.radius
             if b.dynamic and not b.isClumpMember:
                 ids.append(b.id)
@@ -62,6 +67,7 @@ class GrainTable:
             self.radiusById = np.concatenate([self.radiusById, np.zeros(grow)])
         self.radiusById[oldId] = 0.0
         self.radiusById[np.asarray(newIds, dtype=np.int64)] = newRadii
+        self.sphereMaterials.update(O.bodies[int(i)].material.id for i in newIds)
 
     def resized(self, bid, radius):
         self.radii[self.ids == bid] = radius
@@ -121,39 +127,51 @@ def contacts():
 
 
 def contactsOf(ids):
-    """As :func:`contacts`, for the real interactions of the bodies ids only (each contact once)."""
-    seen = {}
-    for b in ids:
-        for i in O.interactions.withBody(int(b)):
-            if i.isReal and (i.id1, i.id2) not in seen:
-                seen[(i.id1, i.id2)] = (i.id1, i.id2, i.phys.normalForce.dot(i.geom.normal), i.geom.penetrationDepth)
-    return _arrays(list(seen.values()))
+    """As :func:`contacts`, for the real interactions of the bodies ids only (each contact once). Fn is
+    read as |normalForce|: only for contact laws that never pull (see :func:`hertzLaw`)."""
+    rows = [(i.id1, i.id2, i.phys.normalForce.norm(), i.geom.penetrationDepth)
+            for b in ids.tolist() for i in O.interactions.withBody(b)]
+    id1, id2, Fn, uN = _arrays(rows)
+    _, first = np.unique(id1 * (len(O.bodies) + 1) + id2, return_index=True)  # a contact of two candidates comes twice
+    return id1[first], id2[first], Fn[first], uN[first]
 
 
 # Contact laws for which eq. 7 follows from the normal force alone (Hertz: F = 4/3 E* sqrt(R) u^1.5).
 _HERTZ_LAW, _HERTZ_IP2 = 'Law2_ScGeom_MindlinPhys_Mindlin', 'Ip2_FrictMat_FrictMat_MindlinPhys'
 
 
-def hertzContacts():
-    """(largest contact modulus E* of the scene [Pa], None) if every contact of the scene is Hertzian
-    and purely elastic in the normal direction, else (None, reason)."""
+def hertzLaw():
+    """None if every contact of the scene is Hertzian and purely elastic in the normal direction (eq. 7
+    then follows from the normal force or the overlap alone), else the reason why not."""
     from yade.wrapper import InteractionLoop
     loops = [e for e in O.engines if isinstance(e, InteractionLoop)]
     if len(loops) != 1:
-        return None, 'expected one InteractionLoop in O.engines, found %d' % len(loops)
+        return 'expected one InteractionLoop in O.engines, found %d' % len(loops)
     laws = [type(f).__name__ for f in loops[0].lawDispatcher.functors]
     ip2s = loops[0].physDispatcher.functors
     if laws != [_HERTZ_LAW] or [type(f).__name__ for f in ip2s] != [_HERTZ_IP2]:
-        return None, 'contact law %s with %s, not %s with %s alone' % (
+        return 'contact law %s with %s, not %s with %s alone' % (
             '+'.join(laws), '+'.join(type(f).__name__ for f in ip2s), _HERTZ_LAW, _HERTZ_IP2)
     law, ip2 = loops[0].lawDispatcher.functors[0], ip2s[0]
     if getattr(law, 'includeAdhesion', False) or getattr(ip2, 'gamma', 0) != 0:
-        return None, 'adhesive Mindlin contacts (gamma or includeAdhesion set)'
+        return 'adhesive Mindlin contacts (gamma or includeAdhesion set)'
     if getattr(ip2, 'betan', None) is not None or getattr(ip2, 'en', None) is not None:
-        return None, 'viscous normal damping in the Mindlin contacts (betan or en set)'
-    mats = [(m.young, m.poisson) for m in O.materials if hasattr(m, 'young') and hasattr(m, 'poisson')]
-    if not mats:
-        return None, 'no elastic material in O.materials'
-    E, nu = np.array([m[0] for m in mats], dtype=float), np.array([m[1] for m in mats], dtype=float)
-    n = len(mats)
-    return float(np.max(_ballast.contactModulus(np.repeat(E, n), np.repeat(nu, n), np.tile(E, n), np.tile(nu, n)))), None
+        return 'viscous normal damping in the Mindlin contacts (betan or en set)'
+    return None
+
+
+def moduli(table):
+    """Largest Hertz contact modulus E* [Pa] between sphere materials, and between a sphere material
+    and the material of a non-sphere body (walls, facets); 0 where there is no such pair."""
+    def props(ids):
+        m = [O.materials[i] for i in sorted(ids)]
+        return (np.array([x.young for x in m], dtype=float), np.array([x.poisson for x in m], dtype=float))
+
+    def largest(a, b):
+        (E1, n1), (E2, n2) = a, b
+        if len(E1) == 0 or len(E2) == 0:
+            return 0.0
+        k, j = len(E1), len(E2)
+        return float(np.max(_ballast.contactModulus(np.repeat(E1, j), np.repeat(n1, j), np.tile(E2, k), np.tile(n2, k))))
+    s, o = props(table.sphereMaterials), props(table.otherMaterials)
+    return largest(s, s), largest(s, o)

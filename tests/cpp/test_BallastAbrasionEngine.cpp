@@ -262,7 +262,7 @@ TEST(BallastAbrasionEngine, PressureBoundBadInputs)
 {
 	const double tr = -1e6, r = 0.01, nan = std::numeric_limits<double>::quiet_NaN();
 	double       b;
-	EXPECT_THROW(abrasionPressureBound(1, &tr, &r, 0.0, 1e11, &b), ArgumentError);
+	EXPECT_THROW(abrasionPressureBound(1, &tr, &r, -0.01, 1e11, &b), ArgumentError);
 	EXPECT_THROW(abrasionPressureBound(1, &tr, &r, 0.01, 0.0, &b), ArgumentError);
 	const double r0 = 0.0;
 	EXPECT_THROW(abrasionPressureBound(1, &tr, &r0, 0.01, 1e11, &b), ArgumentError);
@@ -270,4 +270,37 @@ TEST(BallastAbrasionEngine, PressureBoundBadInputs)
 	const double zero = 0.0;
 	abrasionPressureBound(1, &zero, &r, 0.01, 1e11, &b);
 	EXPECT_EQ(b, 0.0);  // an unloaded grain cannot abrade
+}
+
+TEST(BallastAbrasionEngine, WallContactBoundUsesTheGrainRadius)
+{
+	// rPartner = 0: the contacts are with walls, R = r. One wall contact: bound / p0 = (2 l / r)^(1/3).
+	const double r = 0.015, Es = 3.2e11, F = 2e4;
+	const double uN = hertzOverlap(F, r, Es);
+	const double tr = traceOf(r, {F}, {uN});
+	double       bound;
+	abrasionPressureBound(1, &tr, &r, 0.0, Es, &bound);
+	EXPECT_NEAR(bound / hertzPressure(F, r, 0.0, uN), std::cbrt(2 * (r - uN / 2) / r), 1e-12);
+}
+
+TEST(BallastAbrasionEngine, SphereContactBoundFromTheLargestOverlapRatio)
+{
+	// Hertz contacts between spheres: eq. 7 depends on u_N / R only, so the contact with the largest
+	// u_N / (2 R) has the largest p0, and the bound equals it.
+	const double Es = 1.65e11;
+	double       worst = 0, rho = 0;
+	for (double R1 : {0.012, 0.02})
+		for (double R2 : {0.01, 0.022})
+			for (double F : {1e3, 5e4}) {
+				const double R  = R1 * R2 / (R1 + R2);
+				const double uN = hertzOverlap(F, R, Es);
+				if (uN / (2 * R) > rho) {
+					rho   = uN / (2 * R);
+					worst = hertzPressure(F, R1, R2, uN);
+				}
+			}
+	EXPECT_NEAR(sphereContactBound(rho, Es), worst, 1e-12 * worst);
+	EXPECT_EQ(sphereContactBound(-1.0, Es), 0.0);  // YADE's value when no spheres touch
+	EXPECT_THROW(sphereContactBound(0.01, 0.0), ArgumentError);
+	EXPECT_THROW(sphereContactBound(std::numeric_limits<double>::infinity(), Es), ArgumentError);
 }

@@ -133,8 +133,12 @@ def test_abrasion_bound_of_grains_with_hertz_contacts():
     assert b[2] == 0.0
     with pytest.raises(TypeError, match='stresses'):
         ballast.abrasionBound(np.zeros((2, 3, 3)), radii, rs, Es)
-    with pytest.raises(ValueError, match='rSmall'):
-        ballast.abrasionBound(sig, radii, 0.0, Es)
+    with pytest.raises(ValueError, match='rPartner'):
+        ballast.abrasionBound(sig, radii, -1.0, Es)
+    # sphere-sphere contacts: the bound from the largest u_N / (2 R) is eq. 7 at that contact
+    R = 0.02 * 0.005 / 0.025
+    u = (3 * 5e4 / (4 * Es * math.sqrt(R))) ** (2 / 3)
+    assert ballast.sphereContactBound(u / (2 * R), Es) == pytest.approx(ballast.hertzPressure(5e4, 0.02, 0.005, u), rel=1e-12)
 
 
 @pytest.mark.parametrize('pattern,n,kept', [

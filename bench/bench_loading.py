@@ -1,0 +1,210 @@
+"""Overhead of the ballast engines on the loading phase of the oedometric test, side by side.
+
+    yade -n -x bench/bench_loading.py [--seed 1] [--steps 2000] [--repeat 3] [--out FILE.json]
+    yade -j2 -n -x bench/bench_loading.py ...            (YADE's OpenMP threads)
+
+The stored packing of the seed (scripts/oedometer.py's, built once if missing) is loaded as
+oedometer.py does, the plate added, and the loading of eq. 8 started with no ballast engine. Two
+windows of the loading are saved in memory: its start (F = 0) and 40 % of the cycle (F = 0.9 Fmax,
+where the grains carry nearly the peak load). From each window the same `--steps` steps are run again
+and again, interleaved so that a disturbance of the machine hits every variant alike:
+
+    plain          no ballast engine (the oedometer's own engines: plate servo, Newton, ...)
+    Tc             crushing and abrasion checked every T_c = 3.12e-4 s (the paper's Fig. 5 plateau)
+    everyStep      both checked at every step
+    everyStepFull  both at every step, the abrasion prefilter off (every contact read at every check)
+
+The model parameters are oedometer.py's defaults, so grains may crush in a window; the number of
+events is reported per variant. Then one crushing check and one abrasion check are timed on their own
+(huge strengths: the cost of a check without events) next to one step, and yade.bf's stressTensor +
+checkFailure over the same grains. Ratios, not seconds, are the result: prefer the median.
+"""
+import argparse
+import importlib.util
+import json
+import os
+import statistics
+import sys
+import tempfile
+import time
+
+import __main__
+from yade import O, utils
+
+# under `yade -x` __file__ is yade's own; sys.argv[0] is this script
+HERE = os.path.dirname(os.path.abspath(sys.argv[0] if sys.argv[0].endswith('.py') else __file__))
+ROOT = os.path.dirname(HERE)
+TC = 3.12e-4          # [s] the crushing period of the comparison (Fig. 5)
+PEAK_FRACTION = 0.4   # window 2 starts at 40 % of the cycle: F = Fmax (1 - cos(0.8 pi)) / 2 = 0.905 Fmax
+
+
+def loadOedometer():
+    """scripts/oedometer.py as a module; its PyRunner callbacks are looked up in __main__."""
+    spec = importlib.util.spec_from_file_location('oedometer', os.path.join(ROOT, 'scripts', 'oedometer.py'))
+    mod = importlib.util.module_from_spec(spec)
+    # the script is written for yade's namespace (FrictMat, PyRunner, ... without imports)
+    mod.__dict__.update({k: v for k, v in vars(__main__).items() if not k.startswith('__')})
+    spec.loader.exec_module(mod)
+    for name in dir(mod):
+        if name.startswith('oedo'):
+            setattr(__main__, name, getattr(mod, name))
+    return mod
+
+
+def prepare(mod, a):
+    """The loaded packing with the plate, saved in memory at the two windows; returns the run object
+    and the Python state of the plate servo at each window (O.loadTmp restores only the scene)."""
+    res = tempfile.mkdtemp(prefix='bench_loading_')
+    argv = ['--seed', str(a.seed), '--results', res, '--packingDir', a.packingDir, '--crush', '0', '--abrasion', '0',
+            '--progress', '30', '--samples', '100']
+    p = mod.readParams(argv)
+    run = mod.Oedometer(p)
+    mod._run = run
+    run.makeOutDir()
+    run.packing()
+    saved = {}
+
+    def windows(phase, **kw):
+        if phase != 'load':
+            return original(phase, **kw)
+        T = 1.0 / p['f']
+        O.engines = [e for e in O.engines if e.label != 'oedoRecorder']  # the servo stays, the file writer goes
+        for name, tEnd in (('start', None), ('peak', run.t0 + PEAK_FRACTION * T)):
+            if tEnd is not None:
+                print('bench: running the plain loading to %.0f %% of the cycle (%d steps)' % (
+                    100 * PEAK_FRACTION, int((tEnd - O.time) / O.dt)), flush=True)
+                O.run(int((tEnd - O.time) / O.dt), True)
+            O.saveTmp('bench-' + name)
+            saved[name] = {k: v for k, v in run.__dict__.items() if isinstance(v, (int, float))}
+        return None
+
+    original = run.runPhase
+    run.runPhase = windows
+    run.load()
+    return run, saved, p
+
+
+def ballastEngines(p, every, prefilter=True):
+    from ballast.engines import BallastAbrasionEngine, BallastCrushEngine
+    per = dict(iterPeriod=1) if every else dict(virtPeriod=TC)
+    return [BallastCrushEngine(ft0=p['ft0'], m=p['m'], pattern=p['pattern'], rMin=p['rMin'], seed=p['seed'], **per),
+            BallastAbrasionEngine(strength=p['strength'], gamma=p['gamma'], rMin=p['rMin'], prefilter=prefilter, **per)]
+
+
+def restoreWindow(run, saved, name):
+    O.loadTmp('bench-' + name)
+    run.__dict__.update(saved[name])
+    from ballast import harvest
+    harvest.refresh()
+
+
+VARIANTS = {'plain': None, 'Tc': dict(every=False), 'everyStep': dict(every=True),
+            'everyStepFull': dict(every=True, prefilter=False)}
+
+
+def timeVariants(run, saved, p, name, a):
+    out = {k: {'wall': [], 'cpu': []} for k in VARIANTS}
+    for rep in range(a.repeat):
+        for k, kw in VARIANTS.items():
+            restoreWindow(run, saved, name)
+            engs = ballastEngines(p, **kw) if kw is not None else []
+            O.engines = O.engines + engs
+            w, c = time.perf_counter(), time.process_time()
+            O.run(a.steps, True)
+            out[k]['wall'].append(time.perf_counter() - w)
+            out[k]['cpu'].append(time.process_time() - c)
+            if engs:
+                out[k]['nCrushed'], out[k]['nAbraded'] = engs[0].nCrushed, engs[1].nAbraded
+                out[k]['checks'] = engs[0].nChecks
+                out[k]['crushCheckSeconds'], out[k]['abrasionCheckSeconds'] = engs[0].checkSeconds, engs[1].checkSeconds
+                out[k]['prefilterActive'], out[k]['prefilterNote'] = engs[1].prefilterActive, engs[1].prefilterNote
+                out[k]['contactsRead'] = engs[1].contactsRead
+            O.engines = [e for e in O.engines if not any(e is x for x in engs)]
+        print('bench: window %s, round %d/%d: %s' % (name, rep + 1, a.repeat, '  '.join(
+            '%s %.2f s' % (k, v['wall'][-1]) for k, v in out.items())), flush=True)
+    for k, v in out.items():
+        v['wallMedian'], v['cpuMedian'] = statistics.median(v['wall']), statistics.median(v['cpu'])
+    return out
+
+
+def best(f, repeat):
+    ts = []
+    for _ in range(repeat):
+        t = time.perf_counter()
+        f()
+        ts.append(time.perf_counter() - t)
+    return min(ts)
+
+
+def timeChecks(run, saved, p, name):
+    """One check of each kind at the window, no events (huge strengths), against one step and yade.bf."""
+    from ballast.engines import BallastAbrasionEngine, BallastCrushEngine
+    from yade.bf import bf
+    restoreWindow(run, saved, name)
+    O.run(1, True)
+    O.saveTmp('bench-check')
+    step = best(lambda: O.run(20, True), 3) / 20
+    O.loadTmp('bench-check')
+    O.run(1, True)  # a loaded scene's contact geometry (overlaps) is computed again by the next step
+    grains = [b for b in O.bodies if b is not None and b.dynamic and b.shape.__class__.__name__ == 'Sphere']
+    nContacts = O.interactions.countReal()
+    crush = BallastCrushEngine(ft0=1e30)
+    abr = BallastAbrasionEngine(strength=1e30)
+    abrFull = BallastAbrasionEngine(strength=1e30, prefilter=False)
+    stressOnly = best(lambda: utils.bodyStressTensors(), 20)
+    tCrush = best(crush._fire, 20)
+    tAbrFull = best(abrFull._fire, 20)
+    abr._fire()  # the first check verifies the bound with a full read; time the ones after it
+    tAbr = best(abr._fire, 20)
+    # the prefilter at the real strength: how many grains are candidates here
+    real = BallastAbrasionEngine(strength=p['strength'])
+    real._fire()
+    real._fire()
+
+    def bfCheck():
+        for b in grains:
+            bf.stressTensor(b, stress_correction=True)
+            bf.checkFailure(b, 1e30, 1e30, wei_m=3)
+    tBf = best(bfCheck, 2)
+    return {'grains': len(grains), 'contacts': nContacts, 'step_s': step, 'bodyStressTensors_s': stressOnly,
+            'crush_check_s': tCrush, 'abrasion_check_s': tAbr, 'abrasion_check_full_s': tAbrFull, 'bf_check_s': tBf,
+            'crush_per_grain_s': tCrush / len(grains), 'abrasion_full_per_contact_s': tAbrFull / max(nContacts, 1),
+            'crush_check_in_steps': tCrush / step, 'abrasion_check_in_steps': tAbr / step,
+            'abrasion_check_full_in_steps': tAbrFull / step, 'speedup_vs_bf': tBf / tCrush,
+            'prefilter_candidates_at_real_strength': real.nCandidates, 'prefilter_active': real.prefilterActive,
+            'prefilter_note': real.prefilterNote, 'max_pressure_ratio': real.maxPressureRatio}
+
+
+def main():
+    ap = argparse.ArgumentParser(prog='yade -n -x bench/bench_loading.py', description=__doc__.split('\n\n')[0])
+    ap.add_argument('--seed', type=int, default=1)
+    ap.add_argument('--steps', type=int, default=2000, help='steps per window and variant (default 2000)')
+    ap.add_argument('--repeat', type=int, default=3, help='rounds of all variants (default 3)')
+    ap.add_argument('--packingDir', default=os.path.join(ROOT, 'results', 'packings'),
+                    help='stored packings (default results/packings, as the README main command)')
+    ap.add_argument('--out', default=os.path.join(HERE, 'results_loading_j%d.json' % O.numThreads))
+    a = ap.parse_args(sys.argv[1:])
+    if a.steps < 1 or a.repeat < 1:
+        sys.exit('bench_loading.py: --steps and --repeat must be >= 1, got %d and %d' % (a.steps, a.repeat))
+    mod = loadOedometer()
+    run, saved, p = prepare(mod, a)
+    res = {'threads': O.numThreads, 'seed': a.seed, 'steps': a.steps, 'repeat': a.repeat, 'Tc': TC, 'windows': {}}
+    for name in ('start', 'peak'):
+        v = timeVariants(run, saved, p, name, a)
+        c = timeChecks(run, saved, p, name)
+        plain = v['plain']['wallMedian']
+        res['windows'][name] = {'variants': v, 'checks': c, 'overhead_Tc': v['Tc']['wallMedian'] / plain,
+                                'overhead_every_step': v['everyStep']['wallMedian'] / plain,
+                                'overhead_every_step_full': v['everyStepFull']['wallMedian'] / plain}
+        w = res['windows'][name]
+        print('bench: window %-5s %d grains %d contacts | plain %.3f ms/step | Tc x%.3f | every step x%.3f '
+              '(prefilter off x%.3f) | crush check %.2f steps, abrasion %.2f steps (full read %.2f) | yade.bf %.0fx slower' % (
+                  name, c['grains'], c['contacts'], 1e3 * plain / a.steps, w['overhead_Tc'], w['overhead_every_step'],
+                  w['overhead_every_step_full'], c['crush_check_in_steps'], c['abrasion_check_in_steps'],
+                  c['abrasion_check_full_in_steps'], c['speedup_vs_bf']), flush=True)
+    with open(a.out, 'w') as fh:
+        json.dump(res, fh, indent=1)
+    print('bench: wrote %s' % a.out)
+
+
+main()
