@@ -4,20 +4,23 @@
     yade -j2 -n -x bench/bench_loading.py ...            (YADE's OpenMP threads)
 
 The stored packing of the seed (scripts/oedometer.py's, built once if missing) is loaded as
-oedometer.py does, the plate added, and the loading of eq. 8 started with no ballast engine. Two
-windows of the loading are saved in memory: its start (F = 0) and 40 % of the cycle (F = 0.9 Fmax,
-where the grains carry nearly the peak load). From each window the same `--steps` steps are run again
-and again, interleaved so that a disturbance of the machine hits every variant alike:
+oedometer.py does, the plate added, and the loading of eq. 8 run with oedometer.py's default engines
+(crushing every 1e-4 s, abrasion every 100 steps). Two windows of the loading are saved in memory,
+without the ballast engines: its start (F = 0) and 40 % of the cycle (F = 0.9 Fmax, nearly the peak
+load). From each window the same `--steps` steps are run again and again, interleaved so that a
+disturbance of the machine hits every variant alike:
 
     plain          no ballast engine (the oedometer's own engines: plate servo, Newton, ...)
     Tc             crushing and abrasion checked every T_c = 3.12e-4 s (the paper's Fig. 5 plateau)
-    everyStep      both checked at every step
+    everyStep      crushing checked at every step (the left end of Fig. 5), abrasion every T_c
+    everyStepBoth  both checked at every step
     everyStepFull  both at every step, the abrasion prefilter off (every contact read at every check)
 
-The model parameters are oedometer.py's defaults, so grains may crush in a window; the number of
-events is reported per variant. Then one crushing check and one abrasion check are timed on their own
-(huge strengths: the cost of a check without events) next to one step, and yade.bf's stressTensor +
-checkFailure over the same grains. Ratios, not seconds, are the result: prefer the median.
+The model parameters are oedometer.py's defaults, so a grain may crush in a window; the events are
+counted per variant. Then one crushing check and one abrasion check are timed on their own (huge
+strengths: a check without events; the step's cached reads forgotten before each call) next to one
+step, and yade.bf's stressTensor + checkFailure over the same grains. Ratios, not seconds, are the
+result: the median of the rounds.
 """
 import argparse
 import importlib.util
@@ -35,6 +38,10 @@ from yade import O, utils
 HERE = os.path.dirname(os.path.abspath(sys.argv[0] if sys.argv[0].endswith('.py') else __file__))
 ROOT = os.path.dirname(HERE)
 TC = 3.12e-4          # [s] the crushing period of the comparison (Fig. 5)
+sys.path.insert(0, HERE)
+from timing import best  # noqa: E402
+
+WARMUP = 50          # untimed steps of each variant before the timed ones
 PEAK_FRACTION = 0.4   # window 2 starts at 40 % of the cycle: F = Fmax (1 - cos(0.8 pi)) / 2 = 0.905 Fmax
 
 
@@ -55,8 +62,7 @@ def prepare(mod, a):
     """The loaded packing with the plate, saved in memory at the two windows; returns the run object
     and the Python state of the plate servo at each window (O.loadTmp restores only the scene)."""
     res = tempfile.mkdtemp(prefix='bench_loading_')
-    argv = ['--seed', str(a.seed), '--results', res, '--packingDir', a.packingDir, '--crush', '0', '--abrasion', '0',
-            '--progress', '30', '--samples', '100']
+    argv = ['--seed', str(a.seed), '--results', res, '--packingDir', a.packingDir, '--progress', '30', '--samples', '100']
     p = mod.readParams(argv)
     run = mod.Oedometer(p)
     mod._run = run
@@ -71,11 +77,15 @@ def prepare(mod, a):
         O.engines = [e for e in O.engines if e.label != 'oedoRecorder']  # the servo stays, the file writer goes
         for name, tEnd in (('start', None), ('peak', run.t0 + PEAK_FRACTION * T)):
             if tEnd is not None:
-                print('bench: running the plain loading to %.0f %% of the cycle (%d steps)' % (
+                print('bench: running the loading to %.0f %% of the cycle (%d steps)' % (
                     100 * PEAK_FRACTION, int((tEnd - O.time) / O.dt)), flush=True)
                 O.run(int((tEnd - O.time) / O.dt), True)
+            keep = list(O.engines)
+            O.engines = [e for e in keep if e.label not in ('crush', 'abrasion')]
             O.saveTmp('bench-' + name)
+            O.engines = keep
             saved[name] = {k: v for k, v in run.__dict__.items() if isinstance(v, (int, float))}
+        print('bench: %d grains crushed and %d abraded before the peak window' % (run.nCrushed(), run.nAbraded()), flush=True)
         return None
 
     original = run.runPhase
@@ -84,11 +94,14 @@ def prepare(mod, a):
     return run, saved, p
 
 
-def ballastEngines(p, every, prefilter=True):
+def ballastEngines(p, crushEvery, abrasionEvery, prefilter=True):
     from ballast.engines import BallastAbrasionEngine, BallastCrushEngine
-    per = dict(iterPeriod=1) if every else dict(virtPeriod=TC)
-    return [BallastCrushEngine(ft0=p['ft0'], m=p['m'], pattern=p['pattern'], rMin=p['rMin'], seed=p['seed'], **per),
-            BallastAbrasionEngine(strength=p['strength'], gamma=p['gamma'], rMin=p['rMin'], prefilter=prefilter, **per)]
+
+    def per(every):
+        return dict(iterPeriod=1) if every else dict(virtPeriod=TC)
+    return [BallastCrushEngine(ft0=p['ft0'], m=p['m'], pattern=p['pattern'], rMin=p['rMin'], seed=p['seed'], **per(crushEvery)),
+            BallastAbrasionEngine(strength=p['strength'], gamma=p['gamma'], rMin=p['rMin'], prefilter=prefilter,
+                                  **per(abrasionEvery))]
 
 
 def restoreWindow(run, saved, name):
@@ -98,52 +111,62 @@ def restoreWindow(run, saved, name):
     harvest.refresh()
 
 
-VARIANTS = {'plain': None, 'Tc': dict(every=False), 'everyStep': dict(every=True),
-            'everyStepFull': dict(every=True, prefilter=False)}
+VARIANTS = {'plain': None, 'Tc': dict(crushEvery=False, abrasionEvery=False),
+            'everyStep': dict(crushEvery=True, abrasionEvery=False),
+            'everyStepBoth': dict(crushEvery=True, abrasionEvery=True),
+            'everyStepFull': dict(crushEvery=True, abrasionEvery=True, prefilter=False)}
+
+
+def runOverhead(run, saved, name):
+    """Fixed cost of one O.run(n, wait=True) call [s] (starting and joining the simulation thread),
+    subtracted from every timed run: min over calls of O.run(1) minus one step."""
+    restoreWindow(run, saved, name)
+    O.run(10, True)
+    one = best(lambda: O.run(1, True), 7)
+    many = best(lambda: O.run(200, True), 3)
+    step = (many - one) / 199
+    return max(one - step, 0.0)
 
 
 def timeVariants(run, saved, p, name, a):
+    """Each variant from the same window: WARMUP steps untimed (a fresh engine builds its grain table
+    and verifies its bounds once), then the timed steps; rounds interleaved."""
     out = {k: {'wall': [], 'cpu': []} for k in VARIANTS}
+    over = runOverhead(run, saved, name)
     for rep in range(a.repeat):
         for k, kw in VARIANTS.items():
             restoreWindow(run, saved, name)
             engs = ballastEngines(p, **kw) if kw is not None else []
             O.engines = O.engines + engs
+            O.run(WARMUP, True)
             w, c = time.perf_counter(), time.process_time()
             O.run(a.steps, True)
-            out[k]['wall'].append(time.perf_counter() - w)
+            out[k]['wall'].append(time.perf_counter() - w - over)
             out[k]['cpu'].append(time.process_time() - c)
             if engs:
                 out[k]['nCrushed'], out[k]['nAbraded'] = engs[0].nCrushed, engs[1].nAbraded
-                out[k]['checks'] = engs[0].nChecks
+                out[k]['checks'] = [engs[0].nChecks, engs[1].nChecks]
                 out[k]['crushCheckSeconds'], out[k]['abrasionCheckSeconds'] = engs[0].checkSeconds, engs[1].checkSeconds
                 out[k]['prefilterActive'], out[k]['prefilterNote'] = engs[1].prefilterActive, engs[1].prefilterNote
                 out[k]['contactsRead'] = engs[1].contactsRead
             O.engines = [e for e in O.engines if not any(e is x for x in engs)]
         print('bench: window %s, round %d/%d: %s' % (name, rep + 1, a.repeat, '  '.join(
-            '%s %.2f s' % (k, v['wall'][-1]) for k, v in out.items())), flush=True)
+            '%s %.3f s' % (k, v['wall'][-1]) for k, v in out.items())), flush=True)
     for k, v in out.items():
         v['wallMedian'], v['cpuMedian'] = statistics.median(v['wall']), statistics.median(v['cpu'])
+    out['runOverhead_s'] = over
     return out
-
-
-def best(f, repeat):
-    ts = []
-    for _ in range(repeat):
-        t = time.perf_counter()
-        f()
-        ts.append(time.perf_counter() - t)
-    return min(ts)
 
 
 def timeChecks(run, saved, p, name):
     """One check of each kind at the window, no events (huge strengths), against one step and yade.bf."""
+    from ballast import harvest
     from ballast.engines import BallastAbrasionEngine, BallastCrushEngine
     from yade.bf import bf
     restoreWindow(run, saved, name)
     O.run(1, True)
     O.saveTmp('bench-check')
-    step = best(lambda: O.run(20, True), 3) / 20
+    step = (best(lambda: O.run(400, True), 3) - best(lambda: O.run(1, True), 5)) / 399
     O.loadTmp('bench-check')
     O.run(1, True)  # a loaded scene's contact geometry (overlaps) is computed again by the next step
     grains = [b for b in O.bodies if b is not None and b.dynamic and b.shape.__class__.__name__ == 'Sphere']
@@ -152,10 +175,16 @@ def timeChecks(run, saved, p, name):
     abr = BallastAbrasionEngine(strength=1e30)
     abrFull = BallastAbrasionEngine(strength=1e30, prefilter=False)
     stressOnly = best(lambda: utils.bodyStressTensors(), 20)
-    tCrush = best(crush._fire, 20)
-    tAbrFull = best(abrFull._fire, 20)
+
+    def cold(e):  # as at a new step: nothing read yet
+        def f():
+            harvest.invalidate()
+            e._fire()
+        return f
+    tCrush = best(cold(crush), 20)
+    tAbrFull = best(cold(abrFull), 20)
     abr._fire()  # the first check verifies the bound with a full read; time the ones after it
-    tAbr = best(abr._fire, 20)
+    tAbr = best(cold(abr), 20)
     # the prefilter at the real strength: how many grains are candidates here
     real = BallastAbrasionEngine(strength=p['strength'])
     real._fire()
@@ -191,17 +220,21 @@ def main():
     res = {'threads': O.numThreads, 'seed': a.seed, 'steps': a.steps, 'repeat': a.repeat, 'Tc': TC, 'windows': {}}
     for name in ('start', 'peak'):
         v = timeVariants(run, saved, p, name, a)
+        over = v['runOverhead_s']
         c = timeChecks(run, saved, p, name)
         plain = v['plain']['wallMedian']
-        res['windows'][name] = {'variants': v, 'checks': c, 'overhead_Tc': v['Tc']['wallMedian'] / plain,
+        v = {k: x for k, x in v.items() if k != 'runOverhead_s'}
+        res['windows'][name] = {'variants': v, 'checks': c, 'runOverhead_s': over, 'overhead_Tc': v['Tc']['wallMedian'] / plain,
                                 'overhead_every_step': v['everyStep']['wallMedian'] / plain,
+                                'overhead_every_step_both': v['everyStepBoth']['wallMedian'] / plain,
                                 'overhead_every_step_full': v['everyStepFull']['wallMedian'] / plain}
         w = res['windows'][name]
-        print('bench: window %-5s %d grains %d contacts | plain %.3f ms/step | Tc x%.3f | every step x%.3f '
-              '(prefilter off x%.3f) | crush check %.2f steps, abrasion %.2f steps (full read %.2f) | yade.bf %.0fx slower' % (
+        print('bench: window %-5s %d grains %d contacts | plain %.3f ms/step | Tc x%.3f | crushing every step x%.3f, '
+              'both x%.3f (prefilter off x%.3f) | crush check %.2f steps, abrasion %.2f steps (full read %.2f) | '
+              'yade.bf %.0fx slower' % (
                   name, c['grains'], c['contacts'], 1e3 * plain / a.steps, w['overhead_Tc'], w['overhead_every_step'],
-                  w['overhead_every_step_full'], c['crush_check_in_steps'], c['abrasion_check_in_steps'],
-                  c['abrasion_check_full_in_steps'], c['speedup_vs_bf']), flush=True)
+                  w['overhead_every_step_both'], w['overhead_every_step_full'], c['crush_check_in_steps'],
+                  c['abrasion_check_in_steps'], c['abrasion_check_full_in_steps'], c['speedup_vs_bf']), flush=True)
     with open(a.out, 'w') as fh:
         json.dump(res, fh, indent=1)
     print('bench: wrote %s' % a.out)

@@ -7,11 +7,15 @@ engine. At each check the engine harvests the scene (see :mod:`ballast.harvest`)
 grains at once in C++ (``ballast.crushCheck`` / ``ballast.abrasionCheck``) and applies the result.
 
 Persistence: ``O.save()`` keeps only PyRunner's own fields. Each engine therefore keeps its
-parameters and outputs as JSON in ``O.tags['ballast.<key>']`` and its ``command`` names that key.
+parameters and outputs as JSON in ``O.tags['ballast.<key>']`` (written when they or the events
+change), its events in ``O.tags['ballast.<key>.events']`` and the outputs that change at every
+check in ``O.tags['ballast.<key>.checks']`` (a short tuple, written at every check); its
+``command`` names that key.
 After ``O.load()`` the engine is a plain PyRunner until it fires: then, or at once when you call
 :func:`restore`, it is replaced by a full engine with the saved parameters, counters and events,
 and its label points to it again.
 """
+import ast
 import builtins
 import json
 import math
@@ -98,13 +102,13 @@ class _BallastEngine(PyRunner):
         return s
 
     def _save(self, events=True):
-        """State to O.tags: parameters and scalar outputs (small, written at every check) and the
-        events (written only when they changed)."""
+        """State to O.tags: parameters and scalar outputs, and the events when they changed."""
         s = self.state()
         ev = s['outputs'].pop('events')
         if events:
             O.tags[_TAG + self._key + '.events'] = json.dumps(ev)
         O.tags[_TAG + self._key] = json.dumps(s)
+        O.tags[_TAG + self._key + '.checks'] = repr(tuple(s['outputs'][k] for k in self._perCheck))
 
     def eventsArray(self):
         """events as a NumPy structured array (t, iter, id, x, y, z, radius, value, strength, nNew)."""
@@ -127,8 +131,12 @@ class _BallastEngine(PyRunner):
         changed = self._check(tab, tab.ids[sel], tab.radii[sel])
         d = self.__dict__
         d['nChecks'] += 1
-        d['checkSeconds'] += time.perf_counter() - t0
-        self._save(events=changed or (_TAG + self._key + '.events') not in O.tags.keys())
+        t1 = time.perf_counter()
+        d['checkSeconds'] += t1 - t0
+        if changed:
+            self._save()
+        else:  # only the per-check outputs changed: a short repr, not the whole state in JSON
+            O.tags[_TAG + self._key + '.checks'] = repr(tuple(d[k] for k in self._perCheck))
 
     def _event(self, kind, bid, pos, r, value, strength, newIds):
         self.events.append({'kind': kind, 't': O.time, 'iter': O.iter, 'id': bid, 'pos': [pos[0], pos[1], pos[2]],
@@ -167,6 +175,8 @@ class BallastCrushEngine(_BallastEngine):
         'checkSeconds': (0.0, 'wall time spent in checks, before the state is written to O.tags [s]'),
         'maxStressRatio': (0.0, 'largest sigma_e / f_t over the grains at the last check [-]'),
     }
+
+    _perCheck = ('nChecks', 'checkSeconds', 'maxStressRatio')  # outputs that change at every check
 
     def _summary(self):
         return 'nCrushed=%d volumeLost=%.4g m^3 massLost=%.4g kg' % (self.nCrushed, self.volumeLost, self.massLost)
@@ -244,6 +254,9 @@ class BallastAbrasionEngine(_BallastEngine):
         'contactsRead': (0, 'contacts read from YADE so far, over all checks'),
         'nVerified': (0, 'full checks that confirmed the bound'),
     }
+
+    _perCheck = ('nChecks', 'checkSeconds', 'maxPressureRatio', 'prefilterActive', 'prefilterNote', 'nCandidates',
+                 'contactsRead', 'nVerified')
 
     def _summary(self):
         return 'nAbraded=%d volumeLost=%.4g m^3 massLost=%.4g kg' % (self.nAbraded, self.volumeLost, self.massLost)
@@ -356,7 +369,10 @@ def _restoreKey(key):
                            "cannot be restored; rebuild it with BallastCrushEngine(...) or BallastAbrasionEngine(...) "
                            "and put it in O.engines" % (key, tag))
     s = json.loads(O.tags[tag])
-    s['outputs']['events'] = json.loads(O.tags[tag + '.events']) if (tag + '.events') in O.tags.keys() else []
+    keys = O.tags.keys()
+    s['outputs']['events'] = json.loads(O.tags[tag + '.events']) if (tag + '.events') in keys else []
+    if (tag + '.checks') in keys:  # the per-check outputs, newer than the state
+        s['outputs'].update(zip(_classes[s['class']]._perCheck, ast.literal_eval(O.tags[tag + '.checks'])))
     engines = list(O.engines)
     pos = [i for i, e in enumerate(engines) if isinstance(e, PyRunner) and e.command == _COMMAND % key]
     if not pos:
@@ -368,6 +384,7 @@ def _restoreKey(key):
         setattr(new, k, getattr(old, k))
     new.__dict__.update(s['outputs'])
     new.__dict__['_counter'] = s['counter']
+    new._save()  # the constructor wrote an empty state over the loaded one
     engines[pos[0]] = new
     O.engines = engines
     if new.label:

@@ -74,7 +74,8 @@ class GrainTable:
         self.radiusById[bid] = radius
 
     def commit(self):
-        """Call after the engine's own changes: the table is current again."""
+        """Call after the engine's own changes: the table is current again, the step's caches not."""
+        invalidate()
         self._sign()
 
 
@@ -91,17 +92,32 @@ def grains():
     return _table
 
 
+_sig = (None, None)           # ((O.iter, body count, contact count), signature)
+_stressCache = (None, None)  # ((O.iter, scene signature, contact count), all bodies' tensors)
+
+
 def _signature():
-    return len(O.bodies), utils.getSpheresVolume()
+    """Body count and sphere volume (C++), computed once per step: both engines of a step share it."""
+    global _sig
+    key = (O.iter, len(O.bodies), O.interactions.countReal())
+    if _sig[0] != key:
+        _sig = (key, (len(O.bodies), utils.getSpheresVolume()))
+    return _sig[1]
+
+
+def invalidate():
+    """Forget what was read at this step (the engines call it after changing the scene)."""
+    global _sig, _stressCache
+    _sig = _stressCache = (None, None)
 
 
 def refresh():
-    """Forget the cached grain table (after changing bodies' dynamic flags or masks by hand)."""
+    """Forget the cached grain table and this step's reads: call it after changing bodies by hand
+    (dynamic flags, masks, or radii without a step in between)."""
     global _table
     _table = None
+    invalidate()
 
-
-_stressCache = (None, None)  # ((O.iter, scene signature), all bodies' tensors)
 
 
 def stresses(ids):

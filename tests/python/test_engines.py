@@ -228,6 +228,14 @@ def test_save_load_round_trip(tmp_path):
     n = crush.nChecks
     O.run(3, True)
     assert crush.nChecks == n + 3
+    # a second round trip after checks without events: the events and the per-check outputs survive
+    before = {n: dict(e.state()) for n, e in (('crush', crush), ('abrasion', abrasion))}
+    assert before['crush']['outputs']['events'] and before['crush']['outputs']['nChecks'] == 6
+    O.save(f)
+    O.load(f)
+    restore()
+    for name, e in (('crush', crush), ('abrasion', abrasion)):
+        assert e.state()['outputs'] == before[name]['outputs']
 
 
 def test_loaded_engine_restores_itself_at_its_next_check(tmp_path):
