@@ -106,4 +106,5 @@ def main():
     print('wrote', out)
 
 
-main()
+if __name__ == '__main__':  # yade -x runs a script as __main__; profile_checks.py imports hcpBox
+    main()

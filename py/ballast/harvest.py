@@ -92,14 +92,15 @@ def grains():
     return _table
 
 
-_sig = (None, None)           # ((O.iter, body count, contact count), signature)
-_stressCache = (None, None)  # ((O.iter, scene signature, contact count), all bodies' tensors)
+_sig = (None, None)           # ((O.iter, body count), signature)
+_stressCache = (None, None)  # ((O.iter, scene signature), all bodies' tensors)
 
 
 def _signature():
-    """Body count and sphere volume (C++), computed once per step: both engines of a step share it."""
+    """Body count and sphere volume (C++), computed once per step: both engines of a step share it.
+    Changes within a step are the engines' own, and they call invalidate()."""
     global _sig
-    key = (O.iter, len(O.bodies), O.interactions.countReal())
+    key = (O.iter, len(O.bodies))
     if _sig[0] != key:
         _sig = (key, (len(O.bodies), utils.getSpheresVolume()))
     return _sig[1]
@@ -123,7 +124,7 @@ def refresh():
 def stresses(ids):
     """Fabric stress tensors (eq. 3) of the bodies ids, (n,3,3) [Pa], compression negative."""
     global _stressCache
-    key = (O.iter, _signature(), O.interactions.countReal())
+    key = (O.iter, _signature())
     if _stressCache[0] != key:
         _stressCache = (key, _ballast.matricesToArray(utils.bodyStressTensors()))
     return _stressCache[1][ids]
