@@ -39,7 +39,7 @@ HERE = os.path.dirname(os.path.abspath(sys.argv[0] if sys.argv[0].endswith('.py'
 ROOT = os.path.dirname(HERE)
 TC = 3.12e-4          # [s] the crushing period of the comparison (Fig. 5)
 sys.path.insert(0, HERE)
-from timing import best  # noqa: E402
+from timing import best, stamped  # noqa: E402
 
 WARMUP = 50          # untimed steps of each variant before the timed ones
 PEAK_FRACTION = 0.4   # window 2 starts at 40 % of the cycle: F = Fmax (1 - cos(0.8 pi)) / 2 = 0.905 Fmax
@@ -117,31 +117,18 @@ VARIANTS = {'plain': None, 'Tc': dict(crushEvery=False, abrasionEvery=False),
             'everyStepFull': dict(crushEvery=True, abrasionEvery=True, prefilter=False)}
 
 
-def runOverhead(run, saved, name):
-    """Fixed cost of one O.run(n, wait=True) call [s] (starting and joining the simulation thread),
-    subtracted from every timed run: min over calls of O.run(1) minus one step."""
-    restoreWindow(run, saved, name)
-    O.run(10, True)
-    one = best(lambda: O.run(1, True), 7)
-    many = best(lambda: O.run(200, True), 3)
-    step = (many - one) / 199
-    return max(one - step, 0.0)
-
-
 def timeVariants(run, saved, p, name, a):
     """Each variant from the same window: WARMUP steps untimed (a fresh engine builds its grain table
     and verifies its bounds once), then the timed steps; rounds interleaved."""
     out = {k: {'wall': [], 'cpu': []} for k in VARIANTS}
-    over = runOverhead(run, saved, name)
     for rep in range(a.repeat):
         for k, kw in VARIANTS.items():
             restoreWindow(run, saved, name)
             engs = ballastEngines(p, **kw) if kw is not None else []
             O.engines = O.engines + engs
             O.run(WARMUP, True)
-            w, c = time.perf_counter(), time.process_time()
-            O.run(a.steps, True)
-            out[k]['wall'].append(time.perf_counter() - w - over)
+            c = time.process_time()
+            out[k]['wall'].append(stamped(a.steps))
             out[k]['cpu'].append(time.process_time() - c)
             if engs:
                 out[k]['nCrushed'], out[k]['nAbraded'] = engs[0].nCrushed, engs[1].nAbraded
@@ -154,7 +141,6 @@ def timeVariants(run, saved, p, name, a):
             '%s %.3f s' % (k, v['wall'][-1]) for k, v in out.items())), flush=True)
     for k, v in out.items():
         v['wallMedian'], v['cpuMedian'] = statistics.median(v['wall']), statistics.median(v['cpu'])
-    out['runOverhead_s'] = over
     return out
 
 
@@ -166,7 +152,7 @@ def timeChecks(run, saved, p, name):
     restoreWindow(run, saved, name)
     O.run(1, True)
     O.saveTmp('bench-check')
-    step = (best(lambda: O.run(400, True), 3) - best(lambda: O.run(1, True), 5)) / 399
+    step = min(stamped(500) for _ in range(3)) / 500
     O.loadTmp('bench-check')
     O.run(1, True)  # a loaded scene's contact geometry (overlaps) is computed again by the next step
     grains = [b for b in O.bodies if b is not None and b.dynamic and b.shape.__class__.__name__ == 'Sphere']
@@ -207,7 +193,7 @@ def timeChecks(run, saved, p, name):
 def main():
     ap = argparse.ArgumentParser(prog='yade -n -x bench/bench_loading.py', description=__doc__.split('\n\n')[0])
     ap.add_argument('--seed', type=int, default=1)
-    ap.add_argument('--steps', type=int, default=2000, help='steps per window and variant (default 2000)')
+    ap.add_argument('--steps', type=int, default=3000, help='steps per window and variant (default 3000)')
     ap.add_argument('--repeat', type=int, default=3, help='rounds of all variants (default 3)')
     ap.add_argument('--packingDir', default=os.path.join(ROOT, 'results', 'packings'),
                     help='stored packings (default results/packings, as the README main command)')
@@ -220,11 +206,9 @@ def main():
     res = {'threads': O.numThreads, 'seed': a.seed, 'steps': a.steps, 'repeat': a.repeat, 'Tc': TC, 'windows': {}}
     for name in ('start', 'peak'):
         v = timeVariants(run, saved, p, name, a)
-        over = v['runOverhead_s']
         c = timeChecks(run, saved, p, name)
         plain = v['plain']['wallMedian']
-        v = {k: x for k, x in v.items() if k != 'runOverhead_s'}
-        res['windows'][name] = {'variants': v, 'checks': c, 'runOverhead_s': over, 'overhead_Tc': v['Tc']['wallMedian'] / plain,
+        res['windows'][name] = {'variants': v, 'checks': c, 'overhead_Tc': v['Tc']['wallMedian'] / plain,
                                 'overhead_every_step': v['everyStep']['wallMedian'] / plain,
                                 'overhead_every_step_both': v['everyStepBoth']['wallMedian'] / plain,
                                 'overhead_every_step_full': v['everyStepFull']['wallMedian'] / plain}

@@ -27,14 +27,15 @@ BUDGET = 600.0  # [s] the default run must finish within 10 minutes on a 2-core 
 def busyProcesses():
 	"""Other processes using the CPU now (a benchmark on a busy machine overstates the time)."""
 	try:
-		out = subprocess.run(['ps', '-eo', 'pcpu=,pid=,args='], capture_output=True, text=True).stdout
+		out = subprocess.run(['ps', '-eo', 'stat=,pcpu=,pid=,args='], capture_output=True, text=True).stdout
 	except OSError:
 		return []
 	busy = []
 	for line in out.splitlines():
-		parts = line.split(None, 2)
-		if len(parts) == 3 and float(parts[0]) > 20 and int(parts[1]) != os.getpid():
-			busy.append('%s%% %s' % (parts[0], parts[2][:100]))
+		parts = line.split(None, 3)
+		# ps's %CPU is over the process's life; a stopped process (state T) uses no CPU now
+		if len(parts) == 4 and not parts[0].startswith('T') and float(parts[1]) > 20 and int(parts[2]) != os.getpid():
+			busy.append('%s%% %s' % (parts[1], parts[3][:100]))
 	return busy
 
 

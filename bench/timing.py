@@ -1,5 +1,7 @@
-"""Shared by the bench scripts (run under `yade -x`, which puts bench/ on sys.path by hand)."""
+"""Shared by the bench scripts (run under `yade -x`; they put bench/ on sys.path by hand)."""
 import time
+
+import __main__
 
 
 def best(f, repeat):
@@ -10,3 +12,18 @@ def best(f, repeat):
         f()
         out.append(time.perf_counter() - t)
     return min(out)
+
+
+def stamped(steps):
+    """Wall time of `steps` steps of the current scene [s], stamped by a PyRunner inside the simulation
+    loop: O.run(wait=True) itself returns only at its next poll (tens of ms), too coarse for steps of a
+    fraction of a millisecond."""
+    from yade import O
+    from yade.wrapper import PyRunner
+    stamps = []
+    __main__._benchStamp = lambda: stamps.append(time.perf_counter())
+    stamp = PyRunner(command='_benchStamp()', iterPeriod=steps, initRun=True, label='benchStamp')
+    O.engines = [stamp] + O.engines  # first engine: the stamps bracket whole steps
+    O.run(steps + 1, True)
+    O.engines = [e for e in O.engines if e.label != 'benchStamp']
+    return stamps[1] - stamps[0]
