@@ -133,6 +133,22 @@ def test_abrasion_scales_radius_by_gamma_mass_by_gamma3(ratio):
     assert -S[2, 2] == pytest.approx(squeezedStress(F2, gamma * R, arm2), rel=1e-9)
 
 
+def test_a_new_scene_at_the_same_step_is_read_afresh():
+    """Two scenes one after the other (O.reset()), with the same bodies and step number: what the
+    engine read from the first must not be taken for the second. The second grain is squeezed twice
+    as hard, so it crushes where the first did not."""
+    g, w1, F, arm, uN = loadedGrain()
+    ft = squeezedStress(F, R, arm) / 0.99            # sigma_e = 0.99 f_t: no crushing
+    c1 = add(BallastCrushEngine(ft0=ft * R, iterPeriod=1))
+    O.run(1, True)
+    assert c1.nCrushed == 0 and c1.maxStressRatio == pytest.approx(0.99, rel=1e-6)
+    g, w1, F2, arm2, uN2 = loadedGrain(overlap=OVERLAP * 2 ** (2 / 3))  # Hertz: twice the force
+    assert F2 == pytest.approx(2 * F, rel=2e-2)
+    c2 = add(BallastCrushEngine(ft0=ft * R, iterPeriod=1))
+    O.run(1, True)                                    # the same step number as c1's check
+    assert c2.nCrushed == 1 and c2.events[0]['value'] == pytest.approx(squeezedStress(F2, R, arm2), rel=2e-2)
+
+
 def test_rmin_stops_crushing_and_abrasion_equal_radius_is_eligible():
     loadedGrain()
     c = add(BallastCrushEngine(ft0=1.0, rMin=1.0001 * R, iterPeriod=1))
