@@ -21,7 +21,7 @@ void evaluateAbrasion(const AbrasionParameters& p, long n, const double* radii, 
 {
 	p.validate();
 	for (long g = 0; g < n; ++g) {
-		if (!(radii[g] > 0 && std::isfinite(radii[g]))) requirePositive("radii[" + std::to_string(g) + "]", radii[g]);  // name built on failure only
+		requirePositive("radii", g, radii[g]);
 		p0max[g] = 0;
 	}
 	for (long c = 0; c < nContacts; ++c) {
@@ -53,8 +53,8 @@ void abrasionPressureBound(long n, const double* traces, const double* radii, do
 	requirePositive("EstarMax", EstarMax);
 	for (long g = 0; g < n; ++g) {
 		const double r = radii[g];
-		if (!(r > 0 && std::isfinite(r))) requirePositive("radii[" + std::to_string(g) + "]", r);
-		if (!std::isfinite(traces[g])) requireFinite("traces[" + std::to_string(g) + "]", traces[g]);
+		requirePositive("radii", g, r);
+		requireFinite("traces", g, traces[g]);
 		const double V    = 4.0 / 3.0 * M_PI * r * r * r;
 		const double Fmax = 2.0 * std::fabs(traces[g]) * V / r;                 // largest single normal force
 		const double Rmin = rPartner == 0 ? r : r * rPartner / (r + rPartner);  // smallest effective radius

@@ -22,8 +22,7 @@ void evaluateCrushing(const CrushParameters& p, long n, const double* stresses, 
 {
 	p.validate();
 	for (long g = 0; g < n; ++g) {
-		if (!(radii[g] > 0) || !std::isfinite(radii[g]))
-			throw ArgumentError("radii[" + std::to_string(g) + "]: expected a finite number > 0, got " + formatValue(radii[g]));
+		requirePositive("radii", g, radii[g]);
 		// Eigen maps are column-major by default; the stress is row-major, and von Mises of the
 		// symmetric part does not care about the transposition.
 		const Eigen::Map<const Mat3> s(stresses + 9 * g);

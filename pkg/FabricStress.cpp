@@ -29,7 +29,7 @@ void fabricStressMany(int nGrains, const double* radii, int nContacts, const lon
 {
 	if (nGrains < 0) throw ArgumentError("nGrains: expected >= 0, got " + std::to_string(nGrains));
 	for (int g = 0; g < nGrains; ++g)
-		if (!(radii[g] > 0 && std::isfinite(radii[g]))) requirePositive("radii[" + std::to_string(g) + "]", radii[g]);
+		requirePositive("radii", g, radii[g]);
 	for (int c = 0; c < nContacts; ++c)
 		if (grainOf[c] < 0 || grainOf[c] >= nGrains)
 			throw ArgumentError("grainIndex[" + std::to_string(c) + "]: expected 0 <= index < " + std::to_string(nGrains)

@@ -34,4 +34,19 @@ void requireNonNegative(const std::string& name, double v)
 	if (!std::isfinite(v) || v < 0) throw ArgumentError(name + ": expected a finite number >= 0, got " + formatValue(v));
 }
 
+static std::string element(const char* array, long index)
+{
+	return std::string(array) + "[" + std::to_string(index) + "]";
+}
+
+void requireFinite(const char* array, long index, double v)
+{
+	if (!std::isfinite(v)) requireFinite(element(array, index), v);
+}
+
+void requirePositive(const char* array, long index, double v)
+{
+	if (!std::isfinite(v) || v <= 0) requirePositive(element(array, index), v);
+}
+
 }  // namespace ballast

@@ -18,4 +18,9 @@ void requireFinite(const std::string& name, double v);
 void requirePositive(const std::string& name, double v);     // finite and > 0
 void requireNonNegative(const std::string& name, double v);  // finite and >= 0
 
+// The same for element index of an array named array ("radii[3]"); the name is built only on failure,
+// so a check of every grain costs no string.
+void requireFinite(const char* array, long index, double v);
+void requirePositive(const char* array, long index, double v);
+
 }  // namespace ballast
