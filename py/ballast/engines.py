@@ -38,6 +38,7 @@ _PERIODIC_STATE = ('iterLast', 'virtLast', 'realLast', 'nDone')
 _TAG = 'ballast.'
 _COMMAND = "import ballast.engines as _be; _be._fire(%r)"
 
+_BROKEN = 'bound broken'  # start of prefilterNote once a full read broke the prefilter's bound
 _live = {}      # key -> engine instance created in this process
 _classes = {}   # class name -> class, for restoring
 
@@ -264,22 +265,23 @@ class BallastAbrasionEngine(_BallastEngine):
     def _contacts(self, tab, ids, radii):
         """Contacts to evaluate: all, or with the prefilter only those of grains that may abrade, by
         two bounds on eq. 7 for Hertz contacts: sphere-sphere contacts from YADE's largest overlap
-        ratio (C++), wall and facet contacts from each grain's fabric stress. A full read now and then
-        verifies them. Returns (id1, id2, Fn, uN)."""
+        ratio (C++), wall and facet contacts from each grain's fabric stress. Returns (id1, id2, Fn,
+        uN) and, when all contacts were read to verify the bounds, the bound of each grain (else None)."""
         d = self.__dict__
         d['nCandidates'], d['prefilterActive'] = len(ids), False
         if not self.prefilter:
             d['prefilterNote'] = ''
-            return harvest.contacts()
+            return harvest.contacts(), None
         verify = d['nVerified'] == 0 or self.nChecks % self.verifyPeriod == 0
         if verify or d.get('_law', '') == '':
             # the contact law and the moduli are looked up again at every verification only
             d['_law'] = harvest.hertzLaw() or 'ok'
             d['_moduli'] = harvest.moduli(tab) if d['_law'] == 'ok' else None
-        if d['_law'] != 'ok' or d['prefilterNote'].startswith('bound broken'):
-            if d['_law'] != 'ok':
-                d['prefilterNote'] = d['_law']
-            return harvest.contacts()
+        if d['_law'] != 'ok':
+            d['prefilterNote'] = d['_law']
+            return harvest.contacts(), None
+        if d['prefilterNote'].startswith(_BROKEN):  # the note is saved with the engine: it stays off after O.load
+            return harvest.contacts(), None
         d['prefilterNote'] = ''
         Ess, Esw = d['_moduli']
         gss = _ballast.sphereContactBound(utils.maxOverlapRatio(), Ess) if Ess > 0 else 0.0
@@ -288,35 +290,37 @@ class BallastAbrasionEngine(_BallastEngine):
         cand = np.flatnonzero((bound > self.strength) & (radii >= self.rMin))
         d['prefilterActive'], d['nCandidates'] = True, len(cand)
         if verify:
-            c = harvest.contacts()
-            index = np.full(len(tab.radiusById), -1, dtype=np.int64)
-            index[ids] = np.arange(len(ids))
-            p0, _ = _ballast.abrasionCheck(radii, index[c[0]], index[c[1]], c[2], tab.radiusById[c[0]],
-                                           tab.radiusById[c[1]], c[3], self.strength, 0.0)
-            bad = np.flatnonzero(p0 > bound * (1 + 1e-9))
-            if len(bad):
-                k = bad[np.argmax(p0[bad] / np.maximum(bound[bad], 1e-300))]
-                d['prefilterActive'] = False
-                d['prefilterNote'] = ('bound broken at iter %d: grain %d has p0 = %.4g Pa above its bound %.4g Pa; '
-                                      'the prefilter is off from now on' % (O.iter, ids[k], p0[k], bound[k]))
-                print('BallastAbrasionEngine: ' + d['prefilterNote'])
-            elif np.any(c[2] > 0):
-                d['nVerified'] += 1
-            return c
+            return harvest.contacts(), bound
         if len(cand) > self.maxCandidates * len(ids):
-            return harvest.contacts()
-        return harvest.contactsOf(ids[cand])
+            return harvest.contacts(), None
+        return harvest.contactsOf(ids[cand]), None
+
+    def _verify(self, ids, p0, Fn, bound):
+        """After a full read: eq. 7 of every grain against its bound; a violation switches the
+        prefilter off for the rest of the run."""
+        d = self.__dict__
+        bad = np.flatnonzero(p0 > bound * (1 + 1e-9))
+        if len(bad):
+            k = bad[np.argmax(p0[bad] / np.maximum(bound[bad], 1e-300))]
+            d['prefilterActive'] = False
+            d['prefilterNote'] = ('%s at iter %d: grain %d has p0 = %.4g Pa above its bound %.4g Pa; the prefilter '
+                                  'is off from now on' % (_BROKEN, O.iter, ids[k], p0[k], bound[k]))
+            print('BallastAbrasionEngine: ' + d['prefilterNote'])
+        elif np.any(Fn > 0):
+            d['nVerified'] += 1
 
     def _check(self, tab, ids, radii):
         if len(ids) == 0:
             return False
-        id1, id2, Fn, uN = self._contacts(tab, ids, radii)
+        (id1, id2, Fn, uN), bound = self._contacts(tab, ids, radii)
         self.__dict__['contactsRead'] += len(id1)
         index = np.full(len(tab.radiusById), -1, dtype=np.int64)
         index[ids] = np.arange(len(ids))
         p0, abrade = _ballast.abrasionCheck(radii, index[id1], index[id2], Fn, tab.radiusById[id1],
                                             tab.radiusById[id2], uN, self.strength, self.rMin)
         self.__dict__['maxPressureRatio'] = float(np.max(p0) / self.strength)
+        if bound is not None:
+            self._verify(ids, p0, Fn, bound)
         hit = np.flatnonzero(abrade)
         if len(hit) == 0:
             return False
