@@ -17,12 +17,11 @@ import numpy as np
 from yade import O, utils
 from yade.bf import bf
 
-from ballast import harvest
 from ballast.engines import BallastAbrasionEngine, BallastCrushEngine
 from ballast.scenes import ballastMaterial, hertzEngines, steelMaterial
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(sys.argv[0])))  # bench/, for timing.py
-from timing import best, stamped  # noqa: E402
+from timing import best, bestCheck, stamped  # noqa: E402
 
 SIZES = (200, 2000, 20000)
 
@@ -69,15 +68,10 @@ def measure(n):
     abrasion = BallastAbrasionEngine(strength=1e30, prefilter=False)  # every contact read
     bounded = BallastAbrasionEngine(strength=1e30)                   # the prefilter rules every grain out
     rep = 5 if nGrains > 5000 else 20
-    def cold(e):  # as at a new step: the step's cached reads forgotten
-        def f():
-            harvest.invalidate()
-            e._fire()
-        return f
-    tCrush = best(cold(crush), rep)
-    tAbr = best(cold(abrasion), rep)
+    tCrush = bestCheck(crush, rep)
+    tAbr = bestCheck(abrasion, rep)
     bounded._fire()  # its first check verifies the bounds with a full read
-    tBounded = best(cold(bounded), rep)
+    tBounded = bestCheck(bounded, rep)
     grains = [b for b in O.bodies if b.dynamic]
     nBf = min(len(grains), 2000)                  # yade.bf is slow: time a sample, scale per grain
 

@@ -39,7 +39,7 @@ HERE = os.path.dirname(os.path.abspath(sys.argv[0] if sys.argv[0].endswith('.py'
 ROOT = os.path.dirname(HERE)
 TC = 3.12e-4          # [s] the crushing period of the comparison (Fig. 5)
 sys.path.insert(0, HERE)
-from timing import best, stamped  # noqa: E402
+from timing import best, bestCheck, stamped  # noqa: E402
 
 WARMUP = 50          # untimed steps of each variant before the timed ones
 PEAK_FRACTION = 0.4   # window 2 starts at 40 % of the cycle: F = Fmax (1 - cos(0.8 pi)) / 2 = 0.905 Fmax
@@ -146,7 +146,6 @@ def timeVariants(run, saved, p, name, a):
 
 def timeChecks(run, saved, p, name):
     """One check of each kind at the window, no events (huge strengths), against one step and yade.bf."""
-    from ballast import harvest
     from ballast.engines import BallastAbrasionEngine, BallastCrushEngine
     from yade.bf import bf
     restoreWindow(run, saved, name)
@@ -162,15 +161,10 @@ def timeChecks(run, saved, p, name):
     abrFull = BallastAbrasionEngine(strength=1e30, prefilter=False)
     stressOnly = best(lambda: utils.bodyStressTensors(), 20)
 
-    def cold(e):  # as at a new step: nothing read yet
-        def f():
-            harvest.invalidate()
-            e._fire()
-        return f
-    tCrush = best(cold(crush), 20)
-    tAbrFull = best(cold(abrFull), 20)
+    tCrush = bestCheck(crush, 20)
+    tAbrFull = bestCheck(abrFull, 20)
     abr._fire()  # the first check verifies the bound with a full read; time the ones after it
-    tAbr = best(cold(abr), 20)
+    tAbr = bestCheck(abr, 20)
     # the prefilter at the real strength: how many grains are candidates here
     real = BallastAbrasionEngine(strength=p['strength'])
     real._fire()

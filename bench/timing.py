@@ -14,6 +14,17 @@ def best(f, repeat):
     return min(out)
 
 
+def bestCheck(engine, repeat):
+    """Smallest wall time of one check of a ballast engine [s], as at a new step: what the engines
+    cache within a step (stresses, signature) is forgotten before each call."""
+    from ballast import harvest
+
+    def check():
+        harvest.invalidate()
+        engine._fire()
+    return best(check, repeat)
+
+
 def stamped(steps):
     """Wall time of `steps` steps of the current scene [s], stamped by a PyRunner inside the simulation
     loop: O.run(wait=True) itself returns only at its next poll (tens of ms), too coarse for steps of a
