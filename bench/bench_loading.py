@@ -3,12 +3,12 @@
     yade -n -x bench/bench_loading.py [--seed 1] [--steps 2000] [--repeat 3] [--out FILE.json]
     yade -j2 -n -x bench/bench_loading.py ...            (YADE's OpenMP threads)
 
-The stored packing of the seed (scripts/oedometer.py's, built once if missing) is loaded as
-oedometer.py does, the plate added, and the loading of eq. 8 run with oedometer.py's default engines
-(crushing every 1e-4 s, abrasion every 100 steps). Two windows of the loading are saved in memory,
-without the ballast engines: its start (F = 0) and 40 % of the cycle (F = 0.9 Fmax, nearly the peak
-load). From each window the same `--steps` steps are run again and again, interleaved so that a
-disturbance of the machine hits every variant alike:
+The stored packing of the seed (ballast.oedometer's, built once if missing) is prepared by the
+library (Oedometer.prepare), the plate seated (startLoading) and the loading of eq. 8 run with the
+experiment's default engines (crushing every 1e-4 s, abrasion every 100 steps). Two windows of the
+loading are saved in memory, without the ballast engines: its start (F = 0) and 40 % of the cycle
+(F = 0.9 Fmax, nearly the peak load). From each window the same `--steps` steps are run again and
+again, interleaved so that a disturbance of the machine hits every variant alike:
 
     plain          no ballast engine (the oedometer's own engines: plate servo, Newton, ...)
     Tc             crushing and abrasion checked every T_c = 3.12e-4 s (the paper's Fig. 5 plateau)
@@ -16,14 +16,13 @@ disturbance of the machine hits every variant alike:
     everyStepBoth  both checked at every step
     everyStepFull  both at every step, the abrasion prefilter off (every contact read at every check)
 
-The model parameters are oedometer.py's defaults, so a grain may crush in a window; the events are
+The model parameters are the experiment's defaults, so a grain may crush in a window; the events are
 counted per variant. Then one crushing check and one abrasion check are timed on their own (huge
 strengths: a check without events; the step's cached reads forgotten before each call) next to one
 step, and yade.bf's stressTensor + checkFailure over the same grains. Ratios, not seconds, are the
 result: the median of the rounds.
 """
 import argparse
-import importlib.util
 import json
 import os
 import statistics
@@ -31,8 +30,11 @@ import sys
 import tempfile
 import time
 
-import __main__
 from yade import O, utils
+
+from ballast import harvest
+from ballast.engines import BallastAbrasionEngine, BallastCrushEngine
+from ballast.oedometer import Oedometer
 
 # under `yade -x` __file__ is yade's own; sys.argv[0] is this script
 HERE = os.path.dirname(os.path.abspath(sys.argv[0] if sys.argv[0].endswith('.py') else __file__))
@@ -45,58 +47,32 @@ WARMUP = 50          # untimed steps of each variant before the timed ones
 PEAK_FRACTION = 0.4   # window 2 starts at 40 % of the cycle: F = Fmax (1 - cos(0.8 pi)) / 2 = 0.905 Fmax
 
 
-def loadOedometer():
-    """scripts/oedometer.py as a module; its PyRunner callbacks are looked up in __main__."""
-    spec = importlib.util.spec_from_file_location('oedometer', os.path.join(ROOT, 'scripts', 'oedometer.py'))
-    mod = importlib.util.module_from_spec(spec)
-    # the script is written for yade's namespace (FrictMat, PyRunner, ... without imports)
-    mod.__dict__.update({k: v for k, v in vars(__main__).items() if not k.startswith('__')})
-    spec.loader.exec_module(mod)
-    for name in dir(mod):
-        if name.startswith('oedo'):
-            setattr(__main__, name, getattr(mod, name))
-    return mod
-
-
-def prepare(mod, a):
-    """The loaded packing with the plate, saved in memory at the two windows; returns the run object
+def prepare(a):
+    """The stored packing with the plate, saved in memory at the two windows; returns the experiment
     and the Python state of the plate servo at each window (O.loadTmp restores only the scene)."""
-    res = tempfile.mkdtemp(prefix='bench_loading_')
-    argv = ['--seed', str(a.seed), '--results', res, '--packingDir', a.packingDir, '--progress', '30', '--samples', '100']
-    p = mod.readParams(argv)
-    run = mod.Oedometer(p)
-    mod._run = run
-    run.makeOutDir()
-    run.packing()
+    run = Oedometer(seed=a.seed, results=tempfile.mkdtemp(prefix='bench_loading_'), packingDir=a.packingDir,
+                    progress=30, samples=100)
+    run.prepare()
+    run.startLoading()
+    out = run.outputs
+    # the servo stays, the file writers go
+    O.engines = [e for e in O.engines if e.label not in (out.RECORDER, out.CHECKLOG, out.VTK)]
     saved = {}
-
-    def windows(phase, **kw):
-        if phase != 'load':
-            return original(phase, **kw)
-        T = 1.0 / p['f']
-        O.engines = [e for e in O.engines if e.label != 'oedoRecorder']  # the servo stays, the file writer goes
-        for name, tEnd in (('start', None), ('peak', run.t0 + PEAK_FRACTION * T)):
-            if tEnd is not None:
-                print('bench: running the loading to %.0f %% of the cycle (%d steps)' % (
-                    100 * PEAK_FRACTION, int((tEnd - O.time) / O.dt)), flush=True)
-                O.run(int((tEnd - O.time) / O.dt), True)
-            keep = list(O.engines)
-            O.engines = [e for e in keep if e.label not in ('crush', 'abrasion')]
-            O.saveTmp('bench-' + name)
-            O.engines = keep
-            saved[name] = {k: v for k, v in run.__dict__.items() if isinstance(v, (int, float))}
-        print('bench: %d grains crushed and %d abraded before the peak window' % (run.nCrushed(), run.nAbraded()), flush=True)
-        return None
-
-    original = run.runPhase
-    run.runPhase = windows
-    run.load()
-    return run, saved, p
+    for name, tEnd in (('start', None), ('peak', run.loading.t0 + PEAK_FRACTION * run.T)):
+        if tEnd is not None:
+            print('bench: running the loading to %.0f %% of the cycle (%d steps)' % (
+                100 * PEAK_FRACTION, int((tEnd - O.time) / O.dt)), flush=True)
+            O.run(int((tEnd - O.time) / O.dt), True)
+        keep = list(O.engines)
+        O.engines = [e for e in keep if e.label not in ('crush', 'abrasion')]
+        saveWindow(run, saved, name)
+        O.engines = keep
+    print('bench: %d grains crushed and %d abraded before the peak window' % (
+        run.counter('crush', 'nCrushed'), run.counter('abrasion', 'nAbraded')), flush=True)
+    return run, saved
 
 
 def ballastEngines(p, crushEvery, abrasionEvery, prefilter=True):
-    from ballast.engines import BallastAbrasionEngine, BallastCrushEngine
-
     def per(every):
         return dict(iterPeriod=1) if every else dict(virtPeriod=TC)
     return [BallastCrushEngine(ft0=p['ft0'], m=p['m'], pattern=p['pattern'], rMin=p['rMin'], seed=p['seed'], **per(crushEvery)),
@@ -104,10 +80,17 @@ def ballastEngines(p, crushEvery, abrasionEvery, prefilter=True):
                                   **per(abrasionEvery))]
 
 
+def saveWindow(run, saved, name):
+    O.saveTmp('bench-' + name)
+    saved[name] = run.loading.state()
+
+
 def restoreWindow(run, saved, name):
     O.loadTmp('bench-' + name)
-    run.__dict__.update(saved[name])
-    from ballast import harvest
+    run.loading.setState(saved[name])
+    # the loaded scene is older than the experiment's last step: without this its servo callback
+    # would rebuild another experiment from O.tags
+    run._own()
     harvest.refresh()
 
 
@@ -117,14 +100,14 @@ VARIANTS = {'plain': None, 'Tc': dict(crushEvery=False, abrasionEvery=False),
             'everyStepFull': dict(crushEvery=True, abrasionEvery=True, prefilter=False)}
 
 
-def timeVariants(run, saved, p, name, a):
+def timeVariants(run, saved, name, a):
     """Each variant from the same window: WARMUP steps untimed (a fresh engine builds its grain table
     and verifies its bounds once), then the timed steps; rounds interleaved."""
     out = {k: {'wall': [], 'cpu': []} for k in VARIANTS}
     for rep in range(a.repeat):
         for k, kw in VARIANTS.items():
             restoreWindow(run, saved, name)
-            engs = ballastEngines(p, **kw) if kw is not None else []
+            engs = ballastEngines(run.p, **kw) if kw is not None else []
             O.engines = O.engines + engs
             O.run(WARMUP, True)
             c = time.process_time()
@@ -144,15 +127,14 @@ def timeVariants(run, saved, p, name, a):
     return out
 
 
-def timeChecks(run, saved, p, name):
+def timeChecks(run, saved, name):
     """One check of each kind at the window, no events (huge strengths), against one step and yade.bf."""
-    from ballast.engines import BallastAbrasionEngine, BallastCrushEngine
     from yade.bf import bf
     restoreWindow(run, saved, name)
     O.run(1, True)
-    O.saveTmp('bench-check')
+    saveWindow(run, saved, 'check')
     step = min(stamped(500) for _ in range(3)) / 500
-    O.loadTmp('bench-check')
+    restoreWindow(run, saved, 'check')
     O.run(1, True)  # a loaded scene's contact geometry (overlaps) is computed again by the next step
     grains = [b for b in O.bodies if b is not None and b.dynamic and b.shape.__class__.__name__ == 'Sphere']
     nContacts = O.interactions.countReal()
@@ -166,7 +148,7 @@ def timeChecks(run, saved, p, name):
     abr._fire()  # the first check verifies the bound with a full read; time the ones after it
     tAbr = bestCheck(abr, 20)
     # the prefilter at the real strength: how many grains are candidates here
-    real = BallastAbrasionEngine(strength=p['strength'])
+    real = BallastAbrasionEngine(strength=run.p['strength'])
     real._fire()
     real._fire()
 
@@ -195,12 +177,11 @@ def main():
     a = ap.parse_args(sys.argv[1:])
     if a.steps < 1 or a.repeat < 1:
         sys.exit('bench_loading.py: --steps and --repeat must be >= 1, got %d and %d' % (a.steps, a.repeat))
-    mod = loadOedometer()
-    run, saved, p = prepare(mod, a)
+    run, saved = prepare(a)
     res = {'threads': O.numThreads, 'seed': a.seed, 'steps': a.steps, 'repeat': a.repeat, 'Tc': TC, 'windows': {}}
     for name in ('start', 'peak'):
-        v = timeVariants(run, saved, p, name, a)
-        c = timeChecks(run, saved, p, name)
+        v = timeVariants(run, saved, name, a)
+        c = timeChecks(run, saved, name)
         plain = v['plain']['wallMedian']
         res['windows'][name] = {'variants': v, 'checks': c, 'overhead_Tc': v['Tc']['wallMedian'] / plain,
                                 'overhead_every_step': v['everyStep']['wallMedian'] / plain,

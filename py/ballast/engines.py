@@ -18,7 +18,6 @@ and its label points to it again.
 import ast
 import builtins
 import json
-import math
 import time
 import uuid
 
@@ -28,8 +27,8 @@ from yade import Vector3
 from yade.wrapper import PyRunner
 
 from . import _ballast, harvest
-from .params import (Param, anyInt, boolean, docTable, intNonNegative, nonNegative, openUnit, pattern,
-                     positive, positiveInt, unitInterval, validate)
+from .geometry import sphereVolume
+from .params import ABRASION, CRUSH, docTable, validate, validateAll
 
 # PyRunner's (PeriodicEngine's) own settings, passed through unchanged.
 _PERIODIC = ('iterPeriod', 'virtPeriod', 'realPeriod', 'nDo', 'initRun', 'dead', 'label', 'firstIterRun',
@@ -41,18 +40,6 @@ _COMMAND = "import ballast.engines as _be; _be._fire(%r)"
 _BROKEN = 'bound broken'  # start of prefilterNote once a full read broke the prefilter's bound
 _live = {}      # key -> engine instance created in this process
 _classes = {}   # class name -> class, for restoring
-
-
-def _common():
-    return {
-        'rMin': Param(0.0, 'm', 'grains with a radius below rMin never degrade (fragments included)',
-                      nonNegative, 'a finite number >= 0'),
-        'mask': Param(0, '-', 'groupMask selecting the checked grains (dynamic spheres); 0 = all',
-                      anyInt, 'an integer'),
-        'adjustDt': Param(True, '-', 'after grains shrink, scale O.dt by the drop of utils.PWaveTimeStep() '
-                          '(eq. 5: dt_cr ~ r sqrt(rho/E)); skipped while a time stepper is active',
-                          boolean, 'True or False'),
-    }
 
 
 class _BallastEngine(PyRunner):
@@ -69,11 +56,7 @@ class _BallastEngine(PyRunner):
         if unknown:
             raise TypeError('%s: unknown parameter(s) %s; parameters: %s; periodic settings: %s'
                             % (name, ', '.join(unknown), ', '.join(self._params), ', '.join(_PERIODIC)))
-        missing = [k for k, p in self._params.items() if p.default is None and k not in kw]
-        if missing:
-            raise ValueError('%s: parameter(s) %s required: %s' % (name, ', '.join(missing), '; '.join(
-                self._params[k].docline(k) for k in missing)))
-        values = {k: validate(name, self._params, k, kw.get(k, p.default)) for k, p in self._params.items()}
+        values = validateAll(name, self._params, kw)
         PyRunner.__init__(self, command=_COMMAND % key, **periodic)
         self.__dict__.update(values)
         self.__dict__['_key'] = key
@@ -156,16 +139,7 @@ class _BallastEngine(PyRunner):
 
 
 class BallastCrushEngine(_BallastEngine):
-    _params = dict({
-        'ft0': Param(None, 'Pa m^m', 'reference strength f_t0 of eq. 4, f_t = ft0 / r^m', positive,
-                     'a finite number > 0'),
-        'm': Param(1.0, '-', 'size-effect exponent of eq. 4 (the paper: 1)', nonNegative, 'a finite number >= 0'),
-        'pattern': Param(6, '-', 'fragment layout (Fig. 1): 4 (tetrahedral), 6 (octahedral), 14, or planar4 '
-                         '(four in a plane, the paper\'s 70 % loss)', pattern, "4, 6, 14, 'tetra4', 'planar4', "
-                         "'octa6' or 'fill14'"),
-        'seed': Param(0, '-', 'seed of the random orientation of fragments (reproducible)', intNonNegative,
-                      'an integer >= 0'),
-    }, **_common())
+    _params = CRUSH
     _outputs = {
         'nCrushed': (0, 'grains crushed so far'),
         'volumeLost': (0.0, 'grain volume lost by crushing [m^3]'),
@@ -217,28 +191,13 @@ class BallastCrushEngine(_BallastEngine):
         tab.replaced(bid, newIds, frags[:, 3], mask)
         d = self.__dict__
         d['nCrushed'] += 1
-        d['volumeLost'] += 4.0 / 3.0 * math.pi * (r ** 3 - float(np.sum(frags[:, 3] ** 3)))
+        d['volumeLost'] += sphereVolume(r) - float(np.sum(sphereVolume(frags[:, 3])))
         d['massLost'] += mass - newMass
         self._event('crush', bid, pos, r, se, ft, newIds)
 
 
 class BallastAbrasionEngine(_BallastEngine):
-    _params = dict({
-        'strength': Param(None, 'Pa', 'contact pressure that abrades a grain (eq. 6 compares the maximum Hertz '
-                          'pressure p0 of eq. 7 with it; kept apart from ft0, which is in Pa m)', positive,
-                          'a finite number > 0'),
-        'gamma': Param(0.9, '-', 'radius reduction factor: r_new = gamma r_old', openUnit, 'a number in (0, 1)'),
-        'prefilter': Param(True, '-', 'read only the contacts of grains whose fabric-stress bound on p0 exceeds the '
-                           'strength (ballast.abrasionBound; same decisions, exact for Hertz-Mindlin contacts); it '
-                           'stays off when the contact law is not Hertzian or a full check finds the bound broken',
-                           boolean, 'True or False'),
-        'verifyPeriod': Param(50, '-', 'with the prefilter, every verifyPeriod-th check reads all contacts anyway '
-                              'and checks the bound against them', positiveInt, 'an integer >= 1'),
-        'maxCandidates': Param(0.5, '-', 'with the prefilter, when more than this fraction of the grains are '
-                               'candidates all contacts are read in one pass instead (reading grain by grain costs '
-                               'about 1.6 times more per grain)',
-                               unitInterval, 'a number in [0, 1]'),
-    }, **_common())
+    _params = ABRASION
     _outputs = {
         'nAbraded': (0, 'abrasion events so far'),
         'volumeLost': (0.0, 'grain volume lost by abrasion [m^3]'),
@@ -335,7 +294,7 @@ class BallastAbrasionEngine(_BallastEngine):
             tab.resized(bid, g * r)
             d = self.__dict__
             d['nAbraded'] += 1
-            d['volumeLost'] += 4.0 / 3.0 * math.pi * r ** 3 * (1 - g ** 3)
+            d['volumeLost'] += sphereVolume(r) * (1 - g ** 3)
             d['massLost'] += mass - O.bodies[bid].state.mass
             self._event('abrasion', bid, pos, r, float(p0[k]), self.strength, [])
         tab.commit()

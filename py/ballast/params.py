@@ -1,22 +1,68 @@
-"""Declared parameters of the ballast engines: each parameter is declared once, with its unit,
-default, allowed range and doc string, and validated in one place, the setter."""
+"""The parameter system of the package: every parameter (of the engines, the oedometer, the command
+line and the study tables) is one :class:`Param`, declared once with its unit, default, allowed range
+and doc, and validated in one place, :func:`validate`. Text (a command-line value, a table cell) is
+turned into a value by :meth:`Param.fromText` and then validated like any Python value.
+
+This module needs no YADE: the study runner reads the declarations in plain ``/usr/bin/python3``.
+"""
+import ast
 import math
 import numbers
 
 from . import _ballast
 
 
-class Param:
-    """One engine parameter: default (None = required), unit, doc, check(value) -> value or raise."""
+class ParamError(ValueError):
+    """A bad parameter value; ``name`` is the parameter, the message names the owner, the value and
+    what is allowed."""
 
-    def __init__(self, default, unit, doc, check, allowed):
+    def __init__(self, name, message):
+        ValueError.__init__(self, message)
+        self.name = name
+
+
+class Param:
+    """One parameter: default (None = required), unit, doc, check(value) -> value or raise, allowed
+    (the range in words), parse(text) -> value for command lines and tables."""
+
+    def __init__(self, default, unit, doc, check, allowed, parse=None):
         self.default, self.unit, self.doc, self.check, self.allowed = default, unit, doc, check, allowed
+        self.parse = parse or literal
+
+    def withDefault(self, default, doc=None):
+        """The same declaration with another default (an experiment's choice for an engine parameter)."""
+        return Param(default, self.unit, doc or self.doc, self.check, self.allowed, self.parse)
+
+    def fromText(self, text):
+        return self.parse(text) if isinstance(text, str) else text
 
     def docline(self, name):
         req = 'required' if self.default is None else 'default %r' % (self.default,)
         return '%s: %s [%s] (%s; %s)' % (name, self.doc, self.unit, self.allowed, req)
 
 
+# ---------------------------------------------------------------- text -> value
+def literal(text):
+    """A Python literal as YADE's table reader evaluates cells (1e6, 'planar4'); other text as is."""
+    try:
+        return ast.literal_eval(text.strip())
+    except (ValueError, SyntaxError):
+        return text.strip()
+
+
+def text(text):
+    """Text parameters (paths, names) are taken as they are; quotes of a table cell removed."""
+    t = text.strip()
+    return t[1:-1] if len(t) >= 2 and t[0] == t[-1] and t[0] in '\'"' else t
+
+
+def flag(text):
+    s = text.strip().strip('\'"').lower()
+    return {'1': True, 'true': True, 'yes': True, 'on': True, '0': False, 'false': False, 'no': False,
+            'off': False}.get(s, text)
+
+
+# ---------------------------------------------------------------- checks: value -> value or raise
 def _number(v):
     if isinstance(v, bool) or not isinstance(v, numbers.Real):
         raise TypeError('a number')
@@ -24,6 +70,10 @@ def _number(v):
     if not math.isfinite(v):
         raise ValueError('finite')
     return v
+
+
+def anyNumber(v):
+    return _number(v)
 
 
 def positive(v):
@@ -54,45 +104,133 @@ def unitInterval(v):
     return v
 
 
-def intNonNegative(v):
-    if isinstance(v, bool) or not isinstance(v, numbers.Integral) or v < 0:
+def between(lo, hi, closedHi=False):
+    """A check for lo <= v < hi (or <= hi)."""
+    def check(v):
+        v = _number(v)
+        if not (lo <= v <= hi if closedHi else lo <= v < hi):
+            raise ValueError
+        return v
+    return check
+
+
+def _integer(v):
+    if isinstance(v, bool) or not isinstance(v, numbers.Real) or not math.isfinite(v) or v != int(v):
         raise ValueError
     return int(v)
+
+
+def intNonNegative(v):
+    v = _integer(v)
+    if v < 0:
+        raise ValueError
+    return v
 
 
 def positiveInt(v):
-    if isinstance(v, bool) or not isinstance(v, numbers.Integral) or v < 1:
+    v = _integer(v)
+    if v < 1:
         raise ValueError
-    return int(v)
+    return v
+
+
+def intAtLeast(lo):
+    def check(v):
+        v = _integer(v)
+        if v < lo:
+            raise ValueError
+        return v
+    return check
 
 
 def anyInt(v):
-    if isinstance(v, bool) or not isinstance(v, numbers.Integral):
-        raise ValueError
-    return int(v)
+    return _integer(v)
 
 
 def boolean(v):
+    if isinstance(v, numbers.Integral) and v in (0, 1):  # 0/1 of a table or an older script
+        return bool(v)
     if not isinstance(v, bool):
         raise ValueError
     return v
 
 
+def anyText(v):
+    if not isinstance(v, str):
+        raise ValueError
+    return v
+
+
 def pattern(v):
+    """A fragment layout of Fig. 1, as the C++ core names them (the one list of patterns)."""
     if isinstance(v, bool) or not isinstance(v, (numbers.Integral, str)):
         raise ValueError
+    if isinstance(v, str) and v.strip().isdigit():
+        v = int(v)
     _ballast.patternName(int(v) if isinstance(v, numbers.Integral) else v)  # raises on unknown layouts
     return int(v) if isinstance(v, numbers.Integral) else v
 
 
 def validate(owner, table, name, value):
-    """Checked value of parameter `name`, or a ValueError naming the engine, parameter, value and range."""
+    """Checked value of parameter `name`, or a ParamError naming the owner, parameter, value and range."""
     p = table[name]
     try:
-        return p.check(value)
-    except (TypeError, ValueError):
-        raise ValueError('%s: %s = %r is not allowed: expected %s [%s]' % (owner, name, value, p.allowed, p.unit)) from None
+        return p.check(p.fromText(value))
+    except (TypeError, ValueError, RuntimeError):
+        raise ParamError(name, '%s: %s = %r is not allowed: expected %s [%s]' % (owner, name, value, p.allowed, p.unit)) \
+            from None
+
+
+def validateAll(owner, table, values):
+    """Defaults of `table` updated with `values`, every one checked; unknown names raise first."""
+    unknown = sorted(k for k in values if k not in table)
+    if unknown:
+        raise ParamError(unknown[0], '%s: unknown parameter(s) %s; parameters: %s' % (
+            owner, ', '.join(unknown), ', '.join(table)))
+    missing = [k for k, p in table.items() if p.default is None and k not in values]
+    if missing:
+        raise ParamError(missing[0], '%s: parameter(s) %s required: %s' % (
+            owner, ', '.join(missing), '; '.join(table[k].docline(k) for k in missing)))
+    return {k: validate(owner, table, k, values.get(k, p.default)) for k, p in table.items()}
 
 
 def docTable(table):
     return '\n'.join('    ' + p.docline(n) for n, p in table.items())
+
+
+# ---------------------------------------------------------------- the engines' parameters
+NUMBER_POSITIVE, NUMBER_NONNEGATIVE = 'a finite number > 0', 'a finite number >= 0'
+
+COMMON = {
+    'rMin': Param(0.0, 'm', 'grains with a radius below rMin never degrade (fragments included)',
+                  nonNegative, NUMBER_NONNEGATIVE),
+    'mask': Param(0, '-', 'groupMask selecting the checked grains (dynamic spheres); 0 = all', anyInt, 'an integer'),
+    'adjustDt': Param(True, '-', 'after grains shrink, scale O.dt by the drop of utils.PWaveTimeStep() '
+                      '(eq. 5: dt_cr ~ r sqrt(rho/E)); skipped while a time stepper is active',
+                      boolean, 'True or False', flag),
+}
+
+CRUSH = dict({
+    'ft0': Param(None, 'Pa m^m', 'reference strength f_t0 of eq. 4, f_t = ft0 / r^m', positive, NUMBER_POSITIVE),
+    'm': Param(1.0, '-', 'size-effect exponent of eq. 4 (the paper: 1)', nonNegative, NUMBER_NONNEGATIVE),
+    'pattern': Param(6, '-', 'fragment layout (Fig. 1): 4 (tetrahedral), 6 (octahedral), 14, or planar4 '
+                     '(four in a plane, the paper\'s 70 % loss)', pattern, "4, 6, 14, 'tetra4', 'planar4', "
+                     "'octa6' or 'fill14'"),
+    'seed': Param(0, '-', 'seed of the random orientation of fragments (reproducible)', intNonNegative,
+                  'an integer >= 0'),
+}, **COMMON)
+
+ABRASION = dict({
+    'strength': Param(None, 'Pa', 'contact pressure that abrades a grain (eq. 6 compares the maximum Hertz '
+                      'pressure p0 of eq. 7 with it; kept apart from ft0, which is in Pa m)', positive, NUMBER_POSITIVE),
+    'gamma': Param(0.9, '-', 'radius reduction factor: r_new = gamma r_old', openUnit, 'a number in (0, 1)'),
+    'prefilter': Param(True, '-', 'read only the contacts of grains whose fabric-stress bound on p0 exceeds the '
+                       'strength (ballast.abrasionBound; same decisions, exact for Hertz-Mindlin contacts); it '
+                       'stays off when the contact law is not Hertzian or a full check finds the bound broken',
+                       boolean, 'True or False', flag),
+    'verifyPeriod': Param(50, '-', 'with the prefilter, every verifyPeriod-th check reads all contacts anyway '
+                          'and checks the bound against them', positiveInt, 'an integer >= 1'),
+    'maxCandidates': Param(0.5, '-', 'with the prefilter, when more than this fraction of the grains are '
+                           'candidates all contacts are read in one pass instead (reading grain by grain costs '
+                           'about 1.6 times more per grain)', unitInterval, 'a number in [0, 1]'),
+}, **COMMON)

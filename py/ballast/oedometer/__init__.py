@@ -1,0 +1,25 @@
+"""The oedometric test of the paper (sections 4-5) as a library.
+
+    from ballast.oedometer import Oedometer      # in a yade session
+    run = Oedometer(seed=2, f=4, pattern=14)
+    run.prepare(); run.load(); run.summary()
+
+Modules: :mod:`.parameters` (every parameter, declared once; no YADE needed), :mod:`.scene` (the
+cylinder, materials, engine chain), :mod:`.packing` (the sample), :mod:`.loading` (eq. 8 on a plate),
+:mod:`.outputs` (files, VTK, yade.plot), :mod:`.progress` (phases with progress lines),
+:mod:`.experiment` (Oedometer), :mod:`.commandline` (``yade scripts/oedometer.py``).
+"""
+from .parameters import PARAMS, check, packingKey
+
+_YADE = {'Oedometer': 'experiment', 'StoredPacking': 'packing', 'ServoLoad': 'loading', 'Outputs': 'outputs',
+         'eq8': 'loading'}
+
+__all__ = ['PARAMS', 'check', 'packingKey'] + list(_YADE)
+
+
+def __getattr__(name):
+    """The classes that need YADE, imported on first use: the parameters are readable without it."""
+    if name in _YADE:
+        import importlib
+        return getattr(importlib.import_module('.' + _YADE[name], __name__), name)
+    raise AttributeError('module %r has no attribute %r' % (__name__, name))

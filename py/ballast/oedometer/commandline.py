@@ -1,0 +1,77 @@
+"""``yade scripts/oedometer.py``: the parameters from the command line (``--name value``) and from a
+yade-batch table row (a column per name), every one checked before any work, then one realization."""
+import argparse
+import math
+import os
+import sys
+
+from ..params import ParamError
+from .parameters import OWNER, PARAMS, check
+
+PROG = 'yade scripts/oedometer.py'
+
+
+def _metavar(p):
+    if p.unit == 'path':
+        return 'PATH'
+    return 'V' if p.unit == '-' else p.unit.upper().replace(' ', '').replace('^', '')
+
+
+def parser():
+    ap = argparse.ArgumentParser(prog=PROG, allow_abbrev=False, formatter_class=argparse.RawDescriptionHelpFormatter,
+                                 description='One realization of the oedometric test of Dubina & Elias (sections 4-5). '
+                                 'Every parameter can also be a yade-batch table column of the same name. '
+                                 'See docs/oedometer.md.')
+    for name, p in PARAMS.items():
+        ap.add_argument('--' + name, default=None, metavar=_metavar(p),
+                        help='%s [%s] (%s; default %r)' % (p.doc, p.unit, p.allowed, p.default))
+    return ap
+
+
+def tableValues():
+    """The row of the yade-batch table (YADE_BATCH=table:line) as raw cells; YADE's readParamsFromTable
+    then sets O.tags (description, d.id) as under yade-batch. Cells are read first so that an error
+    names the column instead of failing inside YADE's eval."""
+    from yade import utils
+    if not utils.runningInBatch():
+        return {}
+    tableFile, line = os.environ['YADE_BATCH'].split(':')[:2]
+    row = utils.TableParamReader(tableFile).paramDict()[int(line)]
+    cells = {}
+    for col, raw in row.items():
+        if col == 'description' or col.startswith('!') or raw == '*':
+            continue
+        if col not in PARAMS:
+            raise ParamError(col, '%s: %s is not a parameter (a column of %s); parameters: %s' % (
+                OWNER, col, tableFile, ', '.join(PARAMS)))
+        try:
+            eval(raw, dict(math.__dict__))
+        except Exception:
+            raise ParamError(col, "%s: cannot read %s = %r from %s (numbers as they are, text quoted: 'planar4')" % (
+                OWNER, col, raw, tableFile)) from None
+        cells[col] = raw
+    utils.readParamsFromTable(noTableOk=True, **{k: p.default for k, p in PARAMS.items()})
+    return cells
+
+
+def readParams(argv):
+    """defaults <- yade-batch table row <- command line, all checked. argparse exits with status 2
+    on names it does not know (no abbreviations)."""
+    values = tableValues()
+    values.update({k: v for k, v in vars(parser().parse_args(argv)).items() if v is not None})
+    return check(values)
+
+
+def main(argv=None):
+    """The command line: exit status 2 and a message naming the parameter on a bad value."""
+    from yade import utils
+    try:
+        params = readParams(sys.argv[1:] if argv is None else argv)
+        from .experiment import Oedometer
+        run = Oedometer(**params)
+    except ParamError as e:
+        sys.stderr.write('oedometer.py: bad parameter %s: %s\n' % (e.name, e))
+        sys.exit(2)
+    summary = run.run()
+    utils.waitIfBatch()
+    return run, summary

@@ -1,0 +1,124 @@
+"""Parameters of the oedometric test (sections 4-5), declared once: the library (``Oedometer(**kw)``),
+the command line (``--name value``) and the yade-batch / study tables (a column per name) all use
+these names, units, ranges and defaults. The engine parameters (ft0, m, pattern, rMin, strength,
+gamma) are the engines' own declarations (:mod:`ballast.params`) with the experiment's defaults.
+
+Needs no YADE: the study runner reads it in plain Python.
+"""
+import hashlib
+import json
+import math
+
+from ..params import (ABRASION, CRUSH, NUMBER_NONNEGATIVE, NUMBER_POSITIVE, Param, ParamError, anyText, between,
+                      boolean, flag, intAtLeast, intNonNegative, nonNegative, positive, positiveInt, text,
+                      validateAll)
+
+OWNER = 'Oedometer'
+_PHI = 'a number in [0, pi/2)'
+
+PARAMS = {
+    # realization and geometry (section 4, Fig. 3)
+    'seed': Param(1, '-', 'realization: grain sizes and positions, fragment orientations', intNonNegative,
+                  'an integer >= 0'),
+    'diameter': Param(0.300, 'm', 'inner diameter of the steel cylinder', positive, NUMBER_POSITIVE),
+    'height': Param(0.150, 'm', 'height of the cylinder; the grains fill it after deposition', positive, NUMBER_POSITIVE),
+    'dMin': Param(0.0205, 'm', 'smallest grain diameter (diameters uniform in [dMin, dMax])', positive, NUMBER_POSITIVE),
+    'dMax': Param(0.0445, 'm', 'largest grain diameter', positive, NUMBER_POSITIVE),
+    'segments': Param(48, '-', 'facets around the cylinder (the flat inner faces are at diameter/2)', intAtLeast(12),
+                      'an integer >= 12'),
+    # materials (section 4)
+    'young': Param(3e11, 'Pa', "ballast Young's modulus", positive, NUMBER_POSITIVE),
+    'poisson': Param(0.3, '-', 'ballast Poisson ratio', between(0, 0.5), 'a number in [0, 0.5)'),
+    'friction': Param(0.8, 'rad', 'ballast friction angle', between(0, math.pi / 2), _PHI),
+    'density': Param(2600., 'kg/m^3', 'ballast density', positive, NUMBER_POSITIVE),
+    'steelYoungRatio': Param(10., '-', "steel Young's modulus over the ballast's", positive, NUMBER_POSITIVE),
+    'steelPoisson': Param(0.25, '-', 'steel Poisson ratio', between(0, 0.5), 'a number in [0, 0.5)'),
+    'steelFriction': Param(0.0, 'rad', 'steel friction angle (cylinder and plate)', between(0, math.pi / 2), _PHI),
+    'steelDensity': Param(7850., 'kg/m^3', 'steel density', positive, NUMBER_POSITIVE),
+    # preparation: deposition and vibration
+    'prepYoung': Param(3e8, 'Pa', "ballast Young's modulus while depositing and vibrating (time scaling; steel keeps "
+                       "steelYoungRatio); restored to young before loading", positive, NUMBER_POSITIVE),
+    'prepDamping': Param(0.4, '-', 'local damping while depositing and vibrating', between(0, 1), 'a number in [0, 1)'),
+    'depTime': Param(1.5, 's', 'longest deposition; it stops earlier once the grains rest', positive, NUMBER_POSITIVE),
+    'vibAcc': Param(50., 'm/s^2', 'amplitude of the horizontal acceleration of the cylinder', nonNegative,
+                    NUMBER_NONNEGATIVE),
+    'vibFreq': Param(20., 'Hz', 'frequency of the vibration', positive, NUMBER_POSITIVE),
+    'vibTime': Param(0.2, 's', 'duration of the vibration (rounded up to whole periods; 0 = none)', nonNegative,
+                     NUMBER_NONNEGATIVE),
+    'reusePacking': Param(True, '-', 'load the stored packing of this seed and packing parameters if there is one',
+                          boolean, '0 or 1', flag),
+    'packingDir': Param('', 'path', 'where packings are stored (default <results>/packings)', anyText, 'a path', text),
+    # loading (eq. 8)
+    'f': Param(8.0, 'Hz', 'loading frequency of eq. 8 (the paper: 0.25 to 8 Hz, almost no effect)', positive,
+               NUMBER_POSITIVE),
+    'Fmax': Param(1.5e6, 'N', 'peak force of eq. 8', positive, NUMBER_POSITIVE),
+    'vMax': Param(5.0, 'm/s', "fastest plate speed of the force control (the press's limit; sets how fast a crushing "
+                  "jump is)", positive, NUMBER_POSITIVE),
+    'damping': Param(0.2, '-', 'local (Cundall) damping while loading', between(0, 1), 'a number in [0, 1)'),
+    'dtSafety': Param(0.8, '-', 'time step = dtSafety * PWaveTimeStep() (eq. 5; conservative for Hertz contacts)',
+                      between(1e-9, 1, closedHi=True), 'a number in (0, 1]'),
+    # crushing (section 2) and abrasion (section 3): the engines' declarations
+    'crush': Param(True, '-', 'BallastCrushEngine on', boolean, '0 or 1', flag),
+    'ft0': CRUSH['ft0'].withDefault(2.5e6),
+    'm': CRUSH['m'],
+    'pattern': CRUSH['pattern'],
+    'rMin': CRUSH['rMin'].withDefault(0.010),
+    'Tc': Param(1e-4, 's', 'crushing period T_c: the crushing condition is checked every Tc (0 = every step)',
+                nonNegative, NUMBER_NONNEGATIVE),
+    'abrasion': Param(True, '-', 'BallastAbrasionEngine on', boolean, '0 or 1', flag),
+    'strength': ABRASION['strength'].withDefault(2.5e10),
+    'gamma': ABRASION['gamma'],
+    'abrasionPeriod': Param(100, 'steps', 'the abrasion condition is checked every abrasionPeriod steps', positiveInt,
+                            'an integer >= 1'),
+    # output
+    'results': Param('results', 'path', 'results root; this run writes <results>/<run id>/', anyText, 'a path', text),
+    'runId': Param('', '-', "run id (default O.tags['d.id']); an existing directory gets a suffix, never overwritten",
+                   anyText, 'a name', text),
+    'samples': Param(5000, '-', 'rows of fd.csv per loading cycle', intAtLeast(10), 'an integer >= 10'),
+    'vtk': Param(0.0, 's', 'VTK output period while loading, simulated time (0 = no VTK output)', nonNegative,
+                 NUMBER_NONNEGATIVE),
+    'saveEvery': Param(0.0, 's', 'besides the states at the start and the end of loading, save the state every '
+                       'saveEvery of simulated loading time (0 = only those two)', nonNegative, NUMBER_NONNEGATIVE),
+    'progress': Param(10.0, 's', 'wall-clock seconds between progress lines', positive, NUMBER_POSITIVE),
+    'timing': Param(False, '-', 'time every engine while loading (O.timingEnabled) and write timing.txt', boolean,
+                    '0 or 1', flag),
+}
+
+# What decides a packing: these parameters and the version of the preparation. Bump the version
+# whenever the preparation changes: stored packings of older versions are then not reused.
+PACKING_KEYS = ('seed', 'diameter', 'height', 'dMin', 'dMax', 'segments', 'young', 'poisson', 'friction', 'density',
+                'steelYoungRatio', 'steelPoisson', 'steelFriction', 'steelDensity', 'prepYoung', 'prepDamping',
+                'depTime', 'vibAcc', 'vibFreq', 'vibTime')
+PACKING_VERSION = 2
+
+
+def crossCheck(p):
+    """Checks between parameters; each error names the parameter at fault."""
+    def bad(name, why):
+        raise ParamError(name, '%s: %s = %r is not allowed: %s' % (OWNER, name, p[name], why))
+    if p['dMin'] >= p['dMax']:
+        bad('dMin', 'must be smaller than dMax = %g' % p['dMax'])
+    if p['dMax'] >= p['diameter'] / 2:
+        bad('dMax', 'must be smaller than diameter/2 = %g' % (p['diameter'] / 2))
+    if p['dMax'] >= p['height']:
+        bad('dMax', 'must be smaller than height = %g' % p['height'])
+    if p['rMin'] > p['dMax'] / 2:
+        bad('rMin', 'larger than the largest grain radius dMax/2 = %g' % (p['dMax'] / 2))
+    if p['prepYoung'] > p['young']:
+        bad('prepYoung', 'must not exceed young = %g' % p['young'])
+
+
+def check(values):
+    """All parameters: the defaults updated with `values` (Python values or text), each checked,
+    then checked against each other. Raises ParamError naming the parameter."""
+    p = validateAll(OWNER, PARAMS, values)
+    crossCheck(p)
+    return p
+
+
+def packingKey(p):
+    """(the values that decide the packing, the file name it is stored under)."""
+    d = {k: p[k] for k in PACKING_KEYS}
+    d['version'] = PACKING_VERSION
+    h = hashlib.sha1(json.dumps(d, sort_keys=True).encode()).hexdigest()[:10]
+    return d, 'packing-seed%d-%s.json' % (p['seed'], h)
