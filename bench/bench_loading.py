@@ -90,7 +90,7 @@ def restoreWindow(run, saved, name):
     run.loading.setState(saved[name])
     # the loaded scene is older than the experiment's last step: without this its servo callback
     # would rebuild another experiment from O.tags
-    run._own()
+    run.adopt()
     harvest.refresh()
 
 

@@ -24,7 +24,7 @@ def parser():
                                  'See docs/oedometer.md.')
     for name, p in PARAMS.items():
         ap.add_argument('--' + name, default=None, metavar=_metavar(p),
-                        help='%s [%s] (%s; default %r)' % (p.doc, p.unit, p.allowed, p.default))
+                        help=('%s [%s] (%s; default %r)' % (p.doc, p.unit, p.allowed, p.default)).replace('%', '%%'))
     return ap
 
 

@@ -76,9 +76,10 @@ class Oedometer:
     def newScene(self):
         """O.reset() for a piece that builds a scene: the callbacks then still find this experiment."""
         O.reset()
-        self._own()
+        self.adopt()
 
-    def _own(self):
+    def adopt(self):
+        """Make the current scene this experiment's (after O.loadTmp of an earlier state of it, say)."""
         O.tags[TOKEN_TAG] = self.token
         self.lastIter = O.iter
         callbacks.setLive(self)
@@ -112,9 +113,9 @@ class Oedometer:
         if self.out is None:
             self.makeOutDir()
             self.phases.say('run %s -> %s' % (self.runId, self.out))
-        self._own()
+        self.adopt()
         self.packing.prepare(self)
-        self._own()
+        self.adopt()
         return self
 
     def load(self):
@@ -125,7 +126,7 @@ class Oedometer:
             if self.cylinder is None:
                 self.prepare()
             self.startLoading()
-        self._own()
+        self.adopt()
         t0 = self.loading.t0
         done = math.floor((O.time - t0 + 0.5 * O.dt) / self.T)
         tStart, tEnd = O.time, t0 + (done + 1) * self.T
@@ -368,7 +369,7 @@ class Oedometer:
         exp.wallBefore, exp.cpuBefore = s['wallSeconds'], s['cpuSeconds']
         ballastEngines.restore()
         exp.makeOutDir()
-        exp._own()
+        exp.adopt()
         exp.loading.bind(exp)
         exp.outputs.bind(exp)
         exp.phases.say('reopened %s at t = %.6f s (loading time %.6f s) -> %s' % (

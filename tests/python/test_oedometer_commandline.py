@@ -1,0 +1,75 @@
+"""ballast.oedometer.commandline (scripts/oedometer.py): names it does not know and bad values stop it
+with exit status 2 and a message naming them, before any work; --help lists the parameters; a
+yade-batch table row sets them."""
+import os
+import shutil
+import subprocess
+
+import pytest
+
+pytest.importorskip('yade')
+from ballast.oedometer import commandline  # noqa: E402
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+SCRIPT = os.path.join(ROOT, 'scripts', 'oedometer.py')
+ENV = dict(os.environ, OMP_NUM_THREADS='1')
+ENV.pop('YADE_BATCH', None)
+
+
+def yade(args, env=ENV, cwd=None):
+    return subprocess.run([shutil.which('yade'), '-n', '-x', SCRIPT] + [str(a) for a in args], env=env, cwd=cwd,
+                          capture_output=True, text=True, timeout=120)
+
+
+@pytest.mark.parametrize('argv,named', [(['--F', '2'], '--F'), (['--Fm', '2'], '--Fm'), (['--frequency', '2'], '--frequency')])
+def test_abbreviations_and_unknown_names_exit_2(argv, named, capsys):
+    with pytest.raises(SystemExit) as e:
+        commandline.readParams(argv)
+    assert e.value.code == 2
+    assert named in capsys.readouterr().err
+
+
+def test_values_from_the_command_line_are_checked():
+    p = commandline.readParams(['--f', '2', '--pattern', '14', '--crush', '0'])
+    assert p['f'] == 2.0 and p['pattern'] == 14 and p['crush'] is False
+
+
+def test_script_refuses_abbreviation_before_any_work(tmp_path):
+    p = yade(['--F', '2', '--results', tmp_path / 'r'])
+    assert p.returncode == 2
+    assert 'unrecognized arguments: --F 2' in p.stderr
+    assert not (tmp_path / 'r').exists()
+
+
+@pytest.mark.parametrize('args,name', [(['--f', '-1'], 'f'), (['--pattern', '5'], 'pattern'), (['--rMin', '0.05'], 'rMin'),
+                                       (['--ft0', 'abc'], 'ft0'), (['--gamma', '1.2'], 'gamma')])
+def test_bad_value_exits_2_naming_it(args, name, tmp_path):
+    p = yade(args + ['--results', tmp_path / 'r'])
+    assert p.returncode == 2, p.stderr[-2000:]
+    assert ('bad parameter %s: Oedometer: %s = ' % (name, name)) in p.stderr
+    assert not (tmp_path / 'r').exists()
+
+
+def test_help_lists_parameters_with_units():
+    p = yade(['--help'])
+    assert p.returncode == 0
+    for name in ('--f ', '--pattern', '--ft0', '--rMin', '--Tc', '--strength', '--gamma', '--seed', '--saveEvery'):
+        assert name in p.stdout, name
+    text = ' '.join(p.stdout.split())  # argparse wraps the lines
+    assert 'f_t = ft0 / r^m [Pa m^m]' in text and 'loading frequency of eq. 8' in text and '[Hz]' in text
+
+
+def test_bad_table_cell_names_the_column(tmp_path):
+    table = tmp_path / 'bad.table'
+    table.write_text('seed pattern\n1 planar5\n')
+    p = yade(['--results', tmp_path / 'r'], env=dict(ENV, YADE_BATCH='%s:2' % table))
+    assert p.returncode == 2
+    assert 'bad parameter pattern:' in p.stderr
+
+
+def test_unknown_table_column(tmp_path):
+    table = tmp_path / 'bad.table'
+    table.write_text('seed Fm\n1 2\n')
+    p = yade(['--results', tmp_path / 'r'], env=dict(ENV, YADE_BATCH='%s:2' % table))
+    assert p.returncode == 2
+    assert 'bad parameter Fm: Oedometer: Fm is not a parameter' in p.stderr
