@@ -223,29 +223,34 @@ class BallastAbrasionEngine(_BallastEngine):
 
     def _contacts(self, tab, ids, radii):
         """Contacts to evaluate: all, or with the prefilter only those of grains that may abrade, by
-        two bounds on eq. 7 for Hertz contacts: sphere-sphere contacts from YADE's largest overlap
-        ratio (C++), wall and facet contacts from each grain's fabric stress. Returns (id1, id2, Fn,
-        uN) and, when all contacts were read to verify the bounds, the bound of each grain (else None)."""
+        bounds on eq. 7. Hertz contacts: sphere-sphere contacts from YADE's largest overlap ratio (C++),
+        wall and facet contacts from each grain's fabric stress. Linear contacts: eq. 7 does not depend
+        on the load (harvest.linearBound), one bound for all. Returns (id1, id2, Fn, uN) and, when all
+        contacts were read to verify the bounds, the bound of each grain (else None)."""
         d = self.__dict__
         d['nCandidates'], d['prefilterActive'] = len(ids), False
         if not self.prefilter:
             d['prefilterNote'] = ''
             return harvest.contacts(), None
         verify = d['nVerified'] == 0 or self.nChecks % self.verifyPeriod == 0
-        if verify or d.get('_law', '') == '':
+        if verify or d.get('_law') is None:
             # the contact law and the moduli are looked up again at every verification only
-            d['_law'] = harvest.hertzLaw() or 'ok'
-            d['_moduli'] = harvest.moduli(tab) if d['_law'] == 'ok' else None
-        if d['_law'] != 'ok':
-            d['prefilterNote'] = d['_law']
+            d['_law'], why = harvest.contactLaw()
+            d['_lawNote'] = why or ''
+            d['_moduli'] = {'hertz': harvest.moduli, 'linear': harvest.linearBound}[d['_law']](tab) if d['_law'] else None
+        if d['_law'] is None:
+            d['prefilterNote'] = d['_lawNote']
             return harvest.contacts(), None
         if d['prefilterNote'].startswith(_BROKEN):  # the note is saved with the engine: it stays off after O.load
             return harvest.contacts(), None
         d['prefilterNote'] = ''
-        Ess, Esw = d['_moduli']
-        gss = _ballast.sphereContactBound(utils.maxOverlapRatio(), Ess) if Ess > 0 else 0.0
-        bound = (_ballast.abrasionBound(harvest.stresses(ids), radii, 0.0, Esw) if Esw > 0 else np.zeros(len(ids)))
-        bound = np.maximum(bound, gss)
+        if d['_law'] == 'linear':
+            bound = np.full(len(ids), d['_moduli'])
+        else:
+            Ess, Esw = d['_moduli']
+            gss = _ballast.sphereContactBound(utils.maxOverlapRatio(), Ess) if Ess > 0 else 0.0
+            bound = (_ballast.abrasionBound(harvest.stresses(ids), radii, 0.0, Esw) if Esw > 0 else np.zeros(len(ids)))
+            bound = np.maximum(bound, gss)
         cand = np.flatnonzero((bound > self.strength) & (radii >= self.rMin))
         d['prefilterActive'], d['nCandidates'] = True, len(cand)
         if verify:

@@ -159,7 +159,7 @@ def contacts():
 
 def contactsOf(ids):
     """As :func:`contacts`, for the real interactions of the bodies ids only (each contact once). Fn is
-    read as |normalForce|: only for contact laws that never pull (see :func:`hertzLaw`)."""
+    read as |normalForce|: only for contact laws that never pull (see :func:`contactLaw`)."""
     rows = [(i.id1, i.id2, i.phys.normalForce.norm(), i.geom.penetrationDepth)
             for b in ids.tolist() for i in O.interactions.withBody(b)]
     id1, id2, Fn, uN = _arrays(rows)
@@ -167,28 +167,33 @@ def contactsOf(ids):
     return id1[first], id2[first], Fn[first], uN[first]
 
 
-# Contact laws for which eq. 7 follows from the normal force alone (Hertz: F = 4/3 E* sqrt(R) u^1.5).
-_HERTZ_LAW, _HERTZ_IP2 = 'Law2_ScGeom_MindlinPhys_Mindlin', 'Ip2_FrictMat_FrictMat_MindlinPhys'
+# Contact laws for which the prefilter bounds eq. 7: (Law2, Ip2) by name.
+LAWS = {'hertz': ('Law2_ScGeom_MindlinPhys_Mindlin', 'Ip2_FrictMat_FrictMat_MindlinPhys'),
+        'linear': ('Law2_ScGeom_FrictPhys_CundallStrack', 'Ip2_FrictMat_FrictMat_FrictPhys')}
 
 
-def hertzLaw():
-    """None if every contact of the scene is Hertzian and purely elastic in the normal direction (eq. 7
-    then follows from the normal force or the overlap alone), else the reason why not."""
+def contactLaw():
+    """('hertz' or 'linear', None) when every contact of the scene follows that law, purely elastic in
+    the normal direction, with the stiffness its materials give; else (None, the reason why not)."""
     from yade.wrapper import InteractionLoop
     loops = [e for e in O.engines if isinstance(e, InteractionLoop)]
     if len(loops) != 1:
-        return 'expected one InteractionLoop in O.engines, found %d' % len(loops)
+        return None, 'expected one InteractionLoop in O.engines, found %d' % len(loops)
     laws = [type(f).__name__ for f in loops[0].lawDispatcher.functors]
-    ip2s = loops[0].physDispatcher.functors
-    if laws != [_HERTZ_LAW] or [type(f).__name__ for f in ip2s] != [_HERTZ_IP2]:
-        return 'contact law %s with %s, not %s with %s alone' % (
-            '+'.join(laws), '+'.join(type(f).__name__ for f in ip2s), _HERTZ_LAW, _HERTZ_IP2)
-    law, ip2 = loops[0].lawDispatcher.functors[0], ip2s[0]
-    if getattr(law, 'includeAdhesion', False) or getattr(ip2, 'gamma', 0) != 0:
-        return 'adhesive Mindlin contacts (gamma or includeAdhesion set)'
-    if getattr(ip2, 'betan', None) is not None or getattr(ip2, 'en', None) is not None:
-        return 'viscous normal damping in the Mindlin contacts (betan or en set)'
-    return None
+    ip2s = [type(f).__name__ for f in loops[0].physDispatcher.functors]
+    name = next((k for k, v in LAWS.items() if [v[0]] == laws and [v[1]] == ip2s), None)
+    if name is None:
+        return None, 'contact law %s with %s, not one of %s' % (
+            '+'.join(laws), '+'.join(ip2s), '; '.join('%s with %s' % v for v in LAWS.values()))
+    law, ip2 = loops[0].lawDispatcher.functors[0], loops[0].physDispatcher.functors[0]
+    if name == 'hertz':
+        if getattr(law, 'includeAdhesion', False) or getattr(ip2, 'gamma', 0) != 0:
+            return None, 'adhesive Mindlin contacts (gamma or includeAdhesion set)'
+        if getattr(ip2, 'betan', None) is not None or getattr(ip2, 'en', None) is not None:
+            return None, 'viscous normal damping in the Mindlin contacts (betan or en set)'
+    elif getattr(ip2, 'kn', None) is not None:
+        return None, 'normal stiffness set by Ip2_FrictMat_FrictMat_FrictPhys.kn, not by the materials'
+    return name, None
 
 
 def moduli(table):
@@ -206,3 +211,16 @@ def moduli(table):
         return float(np.max(_ballast.contactModulus(np.repeat(E1, j), np.repeat(n1, j), np.tile(E2, k), np.tile(n2, k))))
     s, o = props(table.sphereMaterials), props(table.otherMaterials)
     return largest(s, s), largest(s, o)
+
+
+def linearBound(table):
+    """Largest p0 of eq. 7 [Pa] any contact can have under the linear law: p0 = 3 Fn / (2 pi R uN) with
+    Fn = kn uN, so p0 = 3 kn / (2 pi R) whatever the load. YADE's FrictPhys gives kn = 2 E1 r1 E2 r2 /
+    (E1 r1 + E2 r2), so between spheres (R = r1 r2 / (r1 + r2)) p0 = 3 E1 E2 (r1 + r2) / (pi (E1 r1 +
+    E2 r2)) <= 3 max(E1, E2) / pi, and with a wall or facet (YADE takes the sphere's radius for both
+    sides; eq. 7 takes R = r) p0 = 3 E1 E2 / (pi (E1 + E2)). 0 where there is no such pair."""
+    Es = [O.materials[i].young for i in table.sphereMaterials]
+    Eo = [O.materials[i].young for i in table.otherMaterials]
+    ss = 3 * max(Es) / np.pi if Es else 0.0
+    sw = max((3 * a * b / (np.pi * (a + b)) for a in Es for b in Eo), default=0.0)
+    return max(ss, sw)

@@ -148,8 +148,6 @@ def anyInt(v):
 
 
 def boolean(v):
-    if isinstance(v, numbers.Integral) and v in (0, 1):  # 0/1 of a table or an older script
-        return bool(v)
     if not isinstance(v, bool):
         raise ValueError
     return v
@@ -171,18 +169,29 @@ def pattern(v):
     return int(v) if isinstance(v, numbers.Integral) else v
 
 
-def validate(owner, table, name, value):
-    """Checked value of parameter `name`, or a ParamError naming the owner, parameter, value and range."""
+def choice(*names):
+    """A check for one of the names."""
+    def check(v):
+        if v not in names:
+            raise ValueError
+        return v
+    return check
+
+
+def validate(owner, table, name, value, text=False):
+    """Checked value of parameter `name`, or a ParamError naming the owner, parameter, value and range.
+    text=True: a string value is text from a command line or a table, read by the parameter's parse;
+    else values are taken as Python gives them (a string where a number is due is an error)."""
     p = table[name]
     try:
-        return p.check(p.fromText(value))
+        return p.check(p.fromText(value) if text else value)
     except (TypeError, ValueError, RuntimeError):
         raise ParamError(name, '%s: %s = %r is not allowed: expected %s [%s]' % (owner, name, value, p.allowed, p.unit)) \
             from None
 
 
-def validateAll(owner, table, values):
-    """Defaults of `table` updated with `values`, every one checked; unknown names raise first."""
+def validateAll(owner, table, values, text=False):
+    """Defaults of `table` updated with `values`, every one checked (see validate); unknown names raise first."""
     unknown = sorted(k for k in values if k not in table)
     if unknown:
         raise ParamError(unknown[0], '%s: unknown parameter(s) %s; parameters: %s' % (
@@ -191,7 +200,7 @@ def validateAll(owner, table, values):
     if missing:
         raise ParamError(missing[0], '%s: parameter(s) %s required: %s' % (
             owner, ', '.join(missing), '; '.join(table[k].docline(k) for k in missing)))
-    return {k: validate(owner, table, k, values.get(k, p.default)) for k, p in table.items()}
+    return {k: validate(owner, table, k, values.get(k, p.default), text) for k, p in table.items()}
 
 
 def docTable(table):
@@ -224,10 +233,11 @@ ABRASION = dict({
     'strength': Param(None, 'Pa', 'contact pressure that abrades a grain (eq. 6 compares the maximum Hertz '
                       'pressure p0 of eq. 7 with it; kept apart from ft0, which is in Pa m)', positive, NUMBER_POSITIVE),
     'gamma': Param(0.9, '-', 'radius reduction factor: r_new = gamma r_old', openUnit, 'a number in (0, 1)'),
-    'prefilter': Param(True, '-', 'read only the contacts of grains whose fabric-stress bound on p0 exceeds the '
-                       'strength (ballast.abrasionBound; same decisions, exact for Hertz-Mindlin contacts); it '
-                       'stays off when the contact law is not Hertzian or a full check finds the bound broken',
-                       boolean, 'True or False', flag),
+    'prefilter': Param(True, '-', 'read only the contacts of grains whose bound on p0 exceeds the strength (same '
+                       'decisions). Hertz-Mindlin contacts: a fabric-stress bound (ballast.abrasionBound) and one from '
+                       'the largest overlap ratio; linear contacts (FrictPhys): eq. 7 is 3 kn / (2 pi R), a constant '
+                       '(harvest.linearBound). It stays off for other contact laws, and once a full read finds a '
+                       'bound broken', boolean, 'True or False', flag),
     'verifyPeriod': Param(50, '-', 'with the prefilter, every verifyPeriod-th check reads all contacts anyway '
                           'and checks the bound against them', positiveInt, 'an integer >= 1'),
     'maxCandidates': Param(0.5, '-', 'with the prefilter, when more than this fraction of the grains are '

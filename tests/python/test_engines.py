@@ -419,16 +419,66 @@ def assertPrefilterOffWithSameAbrasion(noteWords):
     assert fast.nAbraded > 0
 
 
-def test_prefilter_stays_off_for_a_linear_contact_law():
+def linearEngines(**ip2):
     from yade.wrapper import (Ig2_Sphere_Sphere_ScGeom, Ig2_Wall_Sphere_ScGeom, InteractionLoop,
                               Ip2_FrictMat_FrictMat_FrictPhys, Law2_ScGeom_FrictPhys_CundallStrack)
     eng = hertzEngines(gravity=(0, 0, -9.81), damping=0.4)
-    eng = [e if not isinstance(e, InteractionLoop) else InteractionLoop(
-        [Ig2_Sphere_Sphere_ScGeom(), Ig2_Wall_Sphere_ScGeom()], [Ip2_FrictMat_FrictMat_FrictPhys()],
+    return [e if not isinstance(e, InteractionLoop) else InteractionLoop(
+        [Ig2_Sphere_Sphere_ScGeom(), Ig2_Wall_Sphere_ScGeom()], [Ip2_FrictMat_FrictMat_FrictPhys(**ip2)],
         [Law2_ScGeom_FrictPhys_CundallStrack()]) for e in eng]
-    packedBox(engines=eng)
+
+
+LINEAR_E = 1e8  # [Pa] packedBox's grains; its walls are 10 times stiffer
+
+
+def test_eq7_under_the_linear_law_is_a_constant_by_hand():
+    """YADE's linear law: Fn = kn uN with kn = 2 E1 r1 E2 r2 / (E1 r1 + E2 r2) (walls: r1 = r2 = the
+    sphere's radius). Eq. 7 with the geometric overlap, p0 = 3 Fn / (2 pi R uN), is then 3 E / pi between
+    grains of one material and 3 E Ew / (pi (E + Ew)) against a wall, whatever the load; the prefilter's
+    bound (harvest.linearBound) is the larger."""
+    packedBox(E=LINEAR_E, engines=linearEngines())
     O.run(1, True)
-    assertPrefilterOffWithSameAbrasion('Law2_ScGeom_FrictPhys_CundallStrack')
+    ss, sw = [], []
+    for i in O.interactions.all(True):
+        r1, r2 = (O.bodies[k].shape.radius if O.bodies[k].dynamic else 0.0 for k in (i.id1, i.id2))
+        p0 = ballast.hertzPressure(i.phys.normalForce.dot(i.geom.normal), r1, r2, i.geom.penetrationDepth)
+        (sw if 0.0 in (r1, r2) else ss).append(p0)
+    E, Ew = LINEAR_E, 10 * LINEAR_E
+    assert len(ss) > 20 and len(sw) > 10
+    np.testing.assert_allclose(ss, 3 * E / math.pi, rtol=1e-9)
+    np.testing.assert_allclose(sw, 3 * E * Ew / (math.pi * (E + Ew)), rtol=1e-9)
+    from ballast import harvest
+    assert harvest.contactLaw() == ('linear', None)
+    assert harvest.linearBound(harvest.GrainTable()) == pytest.approx(3 * E / math.pi, rel=1e-12)
+
+
+@pytest.mark.parametrize('factor', [0.99, 1.01])
+def test_prefilter_under_the_linear_law_same_decisions(factor):
+    """Below the constant p0 of eq. 7 every grain in contact abrades, above it none: the prefilter reads
+    every contact in the first case and none after its verifying first check in the second, with the
+    same events as a full read."""
+    packedBox(E=LINEAR_E, engines=linearEngines())
+    O.run(1, True)
+    O.saveTmp('box')
+    strength = factor * 3 * LINEAR_E / math.pi
+    full = abrasionRun(False, strength=strength, checks=4)
+    contactsPerCheck = full.contactsRead / 4
+    fast = abrasionRun(True, strength=strength, checks=4)
+    assert [(e['iter'], e['id']) for e in fast.events] == [(e['iter'], e['id']) for e in full.events]
+    assert fast.prefilterActive and fast.prefilterNote == '' and fast.nVerified == 1
+    if factor < 1:
+        assert full.nAbraded > 0
+    else:
+        assert full.nAbraded == 0 and fast.nCandidates == 0
+        assert fast.contactsRead == pytest.approx(contactsPerCheck, rel=0.05)  # the verifying first check only
+
+
+def test_prefilter_stays_off_for_other_laws():
+    """A linear law whose stiffness does not come from the materials (Ip2's kn set): no bound holds."""
+    from yade.wrapper import MatchMaker
+    packedBox(E=LINEAR_E, engines=linearEngines(kn=MatchMaker(algo='val', val=1e5)))
+    O.run(1, True)
+    assertPrefilterOffWithSameAbrasion('normal stiffness set by Ip2_FrictMat_FrictMat_FrictPhys.kn')
 
 
 def test_prefilter_switches_itself_off_when_a_full_read_breaks_the_bound():

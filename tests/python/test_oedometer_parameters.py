@@ -33,7 +33,8 @@ def test_engine_parameters_are_the_engines_declarations():
     ({'height': 0.04}, 'dMax'),               # dMax >= height
     ({'rMin': 0.05}, 'rMin'),                 # rMin > dMax / 2
     ({'prepYoung': 1e12}, 'prepYoung'),       # prepYoung > young
-    ({'f': -1}, 'f'), ({'gamma': 1.2}, 'gamma'), ({'pattern': 5}, 'pattern'), ({'F': 2}, 'F'),
+    ({'f': -1}, 'f'), ({'gamma': 1.2}, 'gamma'), ({'pattern': 5}, 'pattern'), ({'F': 2}, 'F'), ({'f': '2'}, 'f'),
+    ({'law': 'hooke'}, 'law'), ({'loadMode': 'press'}, 'loadMode'),
 ])
 def test_bad_values_name_the_parameter(values, name):
     with pytest.raises(ParamError) as e:
@@ -43,7 +44,7 @@ def test_bad_values_name_the_parameter(values, name):
 
 
 def test_text_values_as_from_a_command_line():
-    p = check({'f': '2', 'pattern': 'planar4', 'crush': '0', 'seed': '3', 'results': '007'})
+    p = check({'f': '2', 'pattern': 'planar4', 'crush': '0', 'seed': '3', 'results': '007'}, text=True)
     assert p['f'] == 2.0 and p['pattern'] == 'planar4' and p['crush'] is False and p['seed'] == 3
     assert p['results'] == '007'
 

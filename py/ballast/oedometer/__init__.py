@@ -11,8 +11,8 @@ cylinder, materials, engine chain), :mod:`.packing` (the sample), :mod:`.loading
 """
 from .parameters import PARAMS, check, packingKey
 
-_YADE = {'Oedometer': 'experiment', 'StoredPacking': 'packing', 'ServoLoad': 'loading', 'Outputs': 'outputs',
-         'eq8': 'loading'}
+_YADE = {'Oedometer': 'experiment', 'StoredPacking': 'packing', 'PlateLoad': 'loading', 'ServoLoad': 'loading',
+         'DisplacementLoad': 'loading', 'Outputs': 'outputs', 'eq8': 'loading'}
 
 __all__ = ['PARAMS', 'check', 'packingKey'] + list(_YADE)
 

@@ -59,7 +59,7 @@ def readParams(argv):
     on names it does not know (no abbreviations)."""
     values = tableValues()
     values.update({k: v for k, v in vars(parser().parse_args(argv)).items() if v is not None})
-    return check(values)
+    return check(values, text=True)
 
 
 def main(argv=None):

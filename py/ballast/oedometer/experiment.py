@@ -8,7 +8,8 @@ prepare() (the packing), load() (the load cycle of eq. 8 with both engines) and 
     run.summary()
 
 The pieces are objects that can be replaced without editing the package: ``packing`` (default
-:class:`StoredPacking`), ``load`` (:class:`ServoLoad`), ``outputs`` (:class:`Outputs`).
+:class:`StoredPacking`), ``load`` (:class:`PlateLoad`, :class:`ServoLoad` or :class:`DisplacementLoad` by
+``loadMode``), ``outputs`` (:class:`Outputs`).
 
 State: the experiment's PyRunners call it through :mod:`ballast.oedometer.callbacks`. ``save(path)``
 writes the experiment's state to ``O.tags`` and calls ``O.save``; the run saves itself at the start
@@ -33,7 +34,7 @@ from ..geometry import sphereVolume
 from ..names import runDirName
 from . import callbacks, scene
 from .callbacks import command
-from .loading import ServoLoad
+from .loading import MODES
 from .outputs import Outputs
 from .packing import StoredPacking
 from .parameters import OWNER, PARAMS, check
@@ -54,7 +55,7 @@ class Oedometer:
     def __init__(self, packing=None, load=None, outputs=None, **params):
         self.p = check(params)
         self.packing = packing if packing is not None else StoredPacking()
-        self.loading = load if load is not None else ServoLoad()
+        self.loading = load if load is not None else MODES[self.p['loadMode']]()
         self.outputs = outputs if outputs is not None else Outputs()
         self.phases = Phases(self.p['progress'])
         self.T = 1.0 / self.p['f']
@@ -130,7 +131,8 @@ class Oedometer:
         t0 = self.loading.t0
         done = math.floor((O.time - t0 + 0.5 * O.dt) / self.T)
         tStart, tEnd = O.time, t0 + (done + 1) * self.T
-        self.phases.run('load', tEnd=tEnd, simSpan=tEnd - tStart, simStart=tStart, afterChunk=self.checkContainment,
+        self.phases.run('load', self.loading.done, tEnd=tEnd, simSpan=tEnd - tStart, simStart=tStart,
+                        afterChunk=self.checkContainment,
                         extra=lambda: 'F=%.0f kN  delta=%.1f mm  crushed %d  abraded %d' % (
                             self.loading.force() / 1e3, self.loading.delta() * 1e3, self.counter('crush', 'nCrushed'),
                             self.counter('abrasion', 'nAbraded')))
@@ -267,10 +269,15 @@ class Oedometer:
         loaded = a[:, 0] >= 0.05 * self.T
         target = self.loading.target(a[:, 0])
         steps = self.phases.steps
+        half = min(0.5 * self.T, a[-1, 0])  # eq. 8 peaks at T/2
+        F5 = np.where(np.isfinite(a[:, 5]), a[:, 5], a[:, 1]) >= 0.05 * p['Fmax']
         s = {
             'runId': self.runId,
             'peakForce': float(a[k, 1]),
             'deltaAtPeak': float(a[k, 2]),
+            'deltaAtAppliedPeak': float(np.interp(half, a[:, 0], a[:, 2])),
+            'forceAtAppliedPeak': float(np.interp(half, a[:, 0], a[:, 1])),
+            'seatingDelta': float(a[np.argmax(F5), 2]) if F5.any() else None,
             'deltaMax': float(np.max(a[:, 2])),
             'deltaFinal': float(a[-1, 2]),
             'nCrushed': self.counter('crush', 'nCrushed'),

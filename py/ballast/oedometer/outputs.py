@@ -13,7 +13,7 @@ from yade.wrapper import PyRunner, Sphere
 from .. import _ballast, harvest
 from .callbacks import command
 
-FD_COLUMNS = ('t', 'F', 'delta', 'nCrushed', 'nAbraded')
+FD_COLUMNS = ('t', 'F', 'delta', 'nCrushed', 'nAbraded', 'Fapplied')
 CHECK_COLUMNS = ('t', 'iter', 'nCrushed', 'maxStressRatio')
 EVENT_COLUMNS = ('kind', 't', 'iter', 'id', 'x', 'y', 'z', 'radius', 'value', 'strength', 'newIds')
 GRAIN_COLUMNS = ('id', 'x', 'y', 'z', 'r', 'mass', 'generation', 'parent', 'nAbraded', 'stressRatio')
@@ -119,15 +119,15 @@ class Outputs:
         self._recolor()
 
     def _writeRow(self, row):
-        self.fd.write('%.9g,%.9g,%.9g,%d,%d\n' % row)
+        self.fd.write('%.9g,%.9g,%.9g,%d,%d,%.9g\n' % row)
 
     def record(self):
         exp = self.exp
         row = (O.time - exp.loading.t0, exp.loading.force(), exp.loading.delta(), exp.counter('crush', 'nCrushed'),
-               exp.counter('abrasion', 'nAbraded'))
+               exp.counter('abrasion', 'nAbraded'), exp.loading.applied())
         if self.rows and row[0] <= self.rows[-1][0]:
             return
-        if self.rows and row[3:] != self.rows[-1][3:]:
+        if self.rows and row[3:5] != self.rows[-1][3:5]:
             self._recolor()
         self.rows.append(row)
         self._writeRow(row)
@@ -214,20 +214,22 @@ class Outputs:
         p = exp.p
         a = np.array(self.rows)
         fig, (ax, ax2) = plt.subplots(1, 2, figsize=(11, 4.5), gridspec_kw={'width_ratios': [3, 2]})
-        ax.plot(a[:, 2] * 1e3, a[:, 1] / 1e3, '-', lw=0.8, color='C0', label='plate force on the grains')
+        ax.plot(a[:, 2] * 1e3, a[:, 1] / 1e3, '-', lw=0.8, color='C0', label='force of the grains on the plate')
+        if np.isfinite(a[:, 5]).any():
+            ax.plot(a[:, 2] * 1e3, a[:, 5] / 1e3, '-', lw=0.8, color='C1', alpha=0.7, label='applied force (eq. 8)')
         tc = np.array([e['t'] - exp.loading.t0 for e in events if e['kind'] == 'crush'])
         if len(tc):
             ax.plot(np.interp(tc, a[:, 0], a[:, 2]) * 1e3, np.interp(tc, a[:, 0], a[:, 1]) / 1e3, 'x', ms=4, color='C3',
                     label='crushing (%d)' % len(tc))
         ax.set_xlabel('plate displacement $\\delta$ [mm]')
         ax.set_ylabel('force F [kN]')
-        ax.set_title('oedometric test %s: seed %d, f = %g Hz, $T_c$ = %s, $f_{t0}$ = %g Pa m, pattern %s' % (
-            exp.runId, p['seed'], p['f'], ('%g s' % p['Tc']) if p['Tc'] > 0 else 'every step', p['ft0'], p['pattern']),
-            fontsize=8)
+        ax.set_title('oedometric test %s: seed %d, f = %g Hz, $T_c$ = %s, $f_{t0}$ = %g Pa m, pattern %s\n%s law, %s load' % (
+            exp.runId, p['seed'], p['f'], ('%g s' % p['Tc']) if p['Tc'] > 0 else 'every step', p['ft0'], p['pattern'],
+            p['law'], p['loadMode']), fontsize=8)
         ax.grid(alpha=0.3)
         ax.legend(fontsize=8, loc='upper left')
         t = np.linspace(0, a[-1, 0], 400)
-        ax2.plot(a[:, 0] * 1e3, a[:, 1] / 1e3, lw=0.8, label='measured')
+        ax2.plot(a[:, 0] * 1e3, a[:, 1] / 1e3, lw=0.8, label='grains on the plate')
         ax2.plot(t * 1e3, exp.loading.target(t) / 1e3, '--', color='k', lw=0.8, label='eq. 8')
         ax2.set_xlabel('loading time t [ms]')
         ax2.set_ylabel('force F [kN]')

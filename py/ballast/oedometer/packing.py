@@ -63,10 +63,10 @@ class StoredPacking:
         exp.newScene()
         exp.ballast, exp.steel = scene.materials(p, p['young'])
         exp.cylinder = scene.Cylinder(p, exp.steel)
-        O.engines = scene.engines(p['damping'])
+        O.engines = scene.engines(p['damping'], p['law'])
         for g in grains:
             x, y, z, r = (float(v) for v in g)
-            O.bodies.append(utils.sphere((x, y, z), r, material=exp.ballast))
+            O.bodies.append(utils.sphere((x, y, z), r, material=exp.ballast, mask=scene.GRAIN_MASK))
         O.dt = p['dtSafety'] * utils.PWaveTimeStep()
         # contacts re-form with the stored overlaps; only the shear history is lost: let it settle
         exp.phases.run('settle', lambda: exp.unbalanced() < 0.01, tEnd=O.time + 0.01, checkEvery=100)
@@ -104,10 +104,10 @@ class StoredPacking:
         pos, rad, hCloud = self.cloud(p, rng, n, Rin)
         # while the cloud falls the wall reaches above it, or grains bounce out over the rim
         exp.cylinder = scene.Cylinder(p, exp.steel, max(p['height'], hCloud + p['dMax']))
-        O.engines = scene.engines(p['prepDamping']) + [
+        O.engines = scene.engines(p['prepDamping'], p['law']) + [
             PyRunner(command=command('packing', 'shake'), iterPeriod=10, dead=True, label='oedoShaker')]
         for c, r in zip(pos, rad):
-            O.bodies.append(utils.sphere(tuple(c), float(r), material=exp.ballast))
+            O.bodies.append(utils.sphere(tuple(c), float(r), material=exp.ballast, mask=scene.GRAIN_MASK))
         O.dt = self.PREP_DT_SAFETY * utils.PWaveTimeStep()
         exp.phases.say('deposit: %d grains falling from up to %.3f m (E = %.3g Pa while preparing, dt = %.2e s)' % (
             n, hCloud, p['prepYoung'], O.dt))
@@ -157,7 +157,7 @@ class StoredPacking:
 
     def stiffen(self, exp):
         """Back to the true modulus. New contacts take it from the materials at once; the existing
-        ones are stiffened gradually (Hertz: kno and kso are proportional to E) over STIFFEN_TIME
+        ones are stiffened gradually (their stiffnesses are proportional to E under both laws) over STIFFEN_TIME
         with strong damping, so that the overlaps of the soft packing relax quasi-statically
         instead of kicking the grains with a suddenly stiffer spring."""
         p = exp.p
@@ -169,23 +169,25 @@ class StoredPacking:
             return
         newton = scene.newton()
         newton.damping = max(p['prepDamping'], 0.8)
-        soft = {(i.id1, i.id2): (i.phys.kno, i.phys.kso) for i in O.interactions if i.isReal}
+        kn, ks = scene.LAWS[p['law']][2]
+        soft = {(i.id1, i.id2): (getattr(i.phys, kn), getattr(i.phys, ks)) for i in O.interactions if i.isReal}
         exp.phases.say('stiffen: E %.3g -> %.3g Pa over %.3g s, dt = %.2e s' % (p['prepYoung'], p['young'],
                                                                                self.STIFFEN_TIME, O.dt))
-        self._stiffen = (O.time, ratio, soft)
+        self._stiffen = (O.time, ratio, soft, kn, ks)
         O.engines = O.engines + [PyRunner(command=command('packing', 'stiffenStep'), iterPeriod=100, initRun=True,
                                           label='oedoStiffener')]
         exp.phases.run('stiffen', tEnd=O.time + self.STIFFEN_TIME)
         O.engines = [e for e in O.engines if e.label != 'oedoStiffener']
-        self._stiffen = (O.time - 2 * self.STIFFEN_TIME, ratio, soft)
+        self._stiffen = (O.time - 2 * self.STIFFEN_TIME, ratio, soft, kn, ks)
         self.stiffenStep()  # the last step to the full modulus
         newton.damping = p['prepDamping']
         exp.phases.run('stiffen', lambda: exp.unbalanced() < 0.02, tEnd=O.time + 0.02, extra=exp.restInfo)
 
     def stiffenStep(self):
-        t0, ratio, soft = self._stiffen
+        t0, ratio, soft, kn, ks = self._stiffen
         fac = ratio ** min((O.time - t0) / self.STIFFEN_TIME, 1.0)
         for i in O.interactions:
             k = soft.get((i.id1, i.id2))
             if k is not None and i.isReal:
-                i.phys.kno, i.phys.kso = k[0] * fac, k[1] * fac
+                setattr(i.phys, kn, k[0] * fac)
+                setattr(i.phys, ks, k[1] * fac)

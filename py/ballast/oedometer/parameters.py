@@ -10,7 +10,7 @@ import json
 import math
 
 from ..params import (ABRASION, CRUSH, NUMBER_NONNEGATIVE, NUMBER_POSITIVE, Param, ParamError, anyText, between,
-                      boolean, flag, intAtLeast, intNonNegative, nonNegative, positive, positiveInt, text,
+                      boolean, choice, flag, intAtLeast, intNonNegative, nonNegative, positive, positiveInt, text,
                       validateAll)
 
 OWNER = 'Oedometer'
@@ -35,6 +35,9 @@ PARAMS = {
     'steelPoisson': Param(0.25, '-', 'steel Poisson ratio', between(0, 0.5), 'a number in [0, 0.5)'),
     'steelFriction': Param(0.0, 'rad', 'steel friction angle (cylinder and plate)', between(0, math.pi / 2), _PHI),
     'steelDensity': Param(7850., 'kg/m^3', 'steel density', positive, NUMBER_POSITIVE),
+    'law': Param('linear', '-', "contact law: 'linear' (YADE's default FrictPhys + CundallStrack, as the paper's "
+                 "FrictMat inputs and eq. 5 suggest) or 'hertz' (Hertz-Mindlin)", choice('linear', 'hertz'),
+                 "'linear' or 'hertz'", text),
     # preparation: deposition and vibration
     'prepYoung': Param(3e8, 'Pa', "ballast Young's modulus while depositing and vibrating (time scaling; steel keeps "
                        "steelYoungRatio); restored to young before loading", positive, NUMBER_POSITIVE),
@@ -52,8 +55,15 @@ PARAMS = {
     'f': Param(8.0, 'Hz', 'loading frequency of eq. 8 (the paper: 0.25 to 8 Hz, almost no effect)', positive,
                NUMBER_POSITIVE),
     'Fmax': Param(1.5e6, 'N', 'peak force of eq. 8', positive, NUMBER_POSITIVE),
-    'vMax': Param(5.0, 'm/s', "fastest plate speed of the force control (the press's limit; sets how fast a crushing "
-                  "jump is)", positive, NUMBER_POSITIVE),
+    'loadMode': Param('plate', '-', "'plate': eq. 8 applied to a steel plate free along the axis; 'servo': a kinematic "
+                      "plate whose speed follows the force error (at most vMax); 'displacement': the plate moves at "
+                      "plateSpeed until the grains carry Fmax", choice('plate', 'servo', 'displacement'),
+                      "'plate', 'servo' or 'displacement'", text),
+    'plateThickness': Param(0.02, 'm', 'thickness of the steel plate; its mass is steelDensity pi (diameter/2)^2 '
+                            'plateThickness', positive, NUMBER_POSITIVE),
+    'vMax': Param(5.0, 'm/s', "servo mode: fastest plate speed of the force control (the press's limit)", positive,
+                  NUMBER_POSITIVE),
+    'plateSpeed': Param(0.05, 'm/s', 'displacement mode: the plate speed', positive, NUMBER_POSITIVE),
     'damping': Param(0.2, '-', 'local (Cundall) damping while loading', between(0, 1), 'a number in [0, 1)'),
     'dtSafety': Param(0.8, '-', 'time step = dtSafety * PWaveTimeStep() (eq. 5; conservative for Hertz contacts)',
                       between(1e-9, 1, closedHi=True), 'a number in (0, 1]'),
@@ -88,8 +98,8 @@ PARAMS = {
 # whenever the preparation changes: stored packings of older versions are then not reused.
 PACKING_KEYS = ('seed', 'diameter', 'height', 'dMin', 'dMax', 'segments', 'young', 'poisson', 'friction', 'density',
                 'steelYoungRatio', 'steelPoisson', 'steelFriction', 'steelDensity', 'prepYoung', 'prepDamping',
-                'depTime', 'vibAcc', 'vibFreq', 'vibTime')
-PACKING_VERSION = 2
+                'depTime', 'vibAcc', 'vibFreq', 'vibTime', 'law')
+PACKING_VERSION = 3
 
 
 def crossCheck(p):
@@ -108,10 +118,10 @@ def crossCheck(p):
         bad('prepYoung', 'must not exceed young = %g' % p['young'])
 
 
-def check(values):
-    """All parameters: the defaults updated with `values` (Python values or text), each checked,
-    then checked against each other. Raises ParamError naming the parameter."""
-    p = validateAll(OWNER, PARAMS, values)
+def check(values, text=False):
+    """All parameters: the defaults updated with `values`, each checked (text=True: strings are text from
+    a command line or a table), then checked against each other. Raises ParamError naming the parameter."""
+    p = validateAll(OWNER, PARAMS, values, text)
     crossCheck(p)
     return p
 

@@ -1,15 +1,27 @@
 """The oedometer of section 4 (Fig. 3) as YADE bodies: ballast and steel materials, the steel cylinder
-of facets with a closed bottom, and the engine chain with the contact law."""
+of facets with a closed bottom, and the engine chain with the contact law (``law``: YADE's linear
+``FrictPhys`` + ``CundallStrack``, or Hertz-Mindlin).
+
+Group masks: grains GRAIN_MASK, steel (facets, plate) STEEL_MASK, and the collider's
+avoidSelfInteractionMask = AVOID: steel bodies share a mask within AVOID, so the collider pairs them
+with grains only. Without it the 144 cylinder facets and the plate held about 1 700 potential
+interactions with each other, half of the scene's.
+"""
 import math
 
 from yade import O, Vector3, geom
-from yade.wrapper import (Bo1_Facet_Aabb, Bo1_Sphere_Aabb, Bo1_Wall_Aabb, ForceResetter, FrictMat,
-                          Ig2_Facet_Sphere_ScGeom, Ig2_Sphere_Sphere_ScGeom, Ig2_Wall_Sphere_ScGeom,
-                          InsertionSortCollider, InteractionLoop, Ip2_FrictMat_FrictMat_MindlinPhys,
-                          Law2_ScGeom_MindlinPhys_Mindlin, NewtonIntegrator)
+from yade.wrapper import (Bo1_Box_Aabb, Bo1_Facet_Aabb, Bo1_Sphere_Aabb, Bo1_Wall_Aabb, ForceResetter, FrictMat,
+                          Ig2_Box_Sphere_ScGeom, Ig2_Facet_Sphere_ScGeom, Ig2_Sphere_Sphere_ScGeom,
+                          Ig2_Wall_Sphere_ScGeom, InsertionSortCollider, InteractionLoop,
+                          Ip2_FrictMat_FrictMat_FrictPhys, Ip2_FrictMat_FrictMat_MindlinPhys,
+                          Law2_ScGeom_FrictPhys_CundallStrack, Law2_ScGeom_MindlinPhys_Mindlin, NewtonIntegrator)
 
 GRAVITY = (0, 0, -9.81)  # [m/s^2]
 STEEL_COLOR = (.6, .6, .6)
+GRAIN_MASK, STEEL_MASK, AVOID = 0b101, 0b110, 0b010   # see the module doc
+# contact laws: (Ip2, Law2, the stiffness attributes of the phys that scale with E)
+LAWS = {'linear': (Ip2_FrictMat_FrictMat_FrictPhys, Law2_ScGeom_FrictPhys_CundallStrack, ('kn', 'ks')),
+        'hertz': (Ip2_FrictMat_FrictMat_MindlinPhys, Law2_ScGeom_MindlinPhys_Mindlin, ('kno', 'kso'))}
 
 
 class Cylinder:
@@ -22,7 +34,7 @@ class Cylinder:
         height = height or p['height']
         # wallMask: up 1, down 2, side 4 -> closed bottom, open top
         facets = geom.facetCylinder((0, 0, height / 2), self.Rv, height, segmentsNumber=p['segments'], wallMask=6,
-                                    material=steel, color=STEEL_COLOR)
+                                    material=steel, color=STEEL_COLOR, mask=STEEL_MASK)
         self.ids = O.bodies.append(facets)
         self.pos0 = [Vector3(O.bodies[i].state.pos) for i in self.ids]
 
@@ -47,15 +59,23 @@ def materials(p, young):
     return ballast, steel
 
 
-def engines(damping, beforeNewton=()):
-    """ForceResetter, collider, interaction loop, `beforeNewton` (a plate control), Newton with gravity."""
+def engines(damping, law):
+    """ForceResetter, collider, interaction loop with the contact law, Newton with gravity."""
+    ip2, law2, _ = LAWS[law]
     return [
         ForceResetter(),
-        InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Facet_Aabb(), Bo1_Wall_Aabb()]),
-        # Hertz-Mindlin: normal force kno uN^1.5 is the Hertz solution behind p0 of eq. 7 (docs/oedometer.md)
-        InteractionLoop([Ig2_Sphere_Sphere_ScGeom(), Ig2_Facet_Sphere_ScGeom(), Ig2_Wall_Sphere_ScGeom()],
-                        [Ip2_FrictMat_FrictMat_MindlinPhys()], [Law2_ScGeom_MindlinPhys_Mindlin()]),
-    ] + list(beforeNewton) + [NewtonIntegrator(damping=damping, gravity=GRAVITY, label='newton')]
+        InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Facet_Aabb(), Bo1_Wall_Aabb(), Bo1_Box_Aabb()],
+                              avoidSelfInteractionMask=AVOID),
+        InteractionLoop([Ig2_Sphere_Sphere_ScGeom(), Ig2_Facet_Sphere_ScGeom(), Ig2_Wall_Sphere_ScGeom(),
+                         Ig2_Box_Sphere_ScGeom()], [ip2()], [law2()]),
+        NewtonIntegrator(damping=damping, gravity=GRAVITY, label='newton')]
+
+
+def insertBeforeNewton(engines):
+    """Put engines (a plate's force or control) between the interaction loop and NewtonIntegrator."""
+    chain = list(O.engines)
+    k = next(i for i, e in enumerate(chain) if isinstance(e, NewtonIntegrator))
+    O.engines = chain[:k] + list(engines) + chain[k:]
 
 
 def newton():
