@@ -76,7 +76,9 @@ PARAMS = {
     'Tc': Param(1e-4, 's', 'crushing period T_c: the crushing condition is checked every Tc (0 = every step)',
                 nonNegative, NUMBER_NONNEGATIVE),
     'abrasion': Param(True, '-', 'BallastAbrasionEngine on', boolean, '0 or 1', flag),
-    'strength': ABRASION['strength'].withDefault(2.5e10),
+    # under the linear law eq. 7 is 3 kn / (2 pi R) = 3 E / pi = 2.86e11 Pa at every grain contact whatever the
+    # load (harvest.linearBound): a strength below it abrades every grain in contact at every check
+    'strength': ABRASION['strength'].withDefault(3e11),
     'gamma': ABRASION['gamma'],
     'abrasionPeriod': Param(100, 'steps', 'the abrasion condition is checked every abrasionPeriod steps', positiveInt,
                             'an integer >= 1'),
