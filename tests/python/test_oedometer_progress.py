@@ -7,7 +7,7 @@ from yade import O, utils  # noqa: E402
 from yade.wrapper import ForceResetter, NewtonIntegrator  # noqa: E402
 
 from ballast.oedometer import callbacks  # noqa: E402
-from ballast.oedometer.progress import Phases, fmtTime  # noqa: E402
+from ballast.oedometer.progress import Phases  # noqa: E402
 
 
 class Live:
@@ -23,10 +23,6 @@ def falling():
     O.bodies.append(utils.sphere((0, 0, 0), 0.01))
     O.engines = [ForceResetter(), NewtonIntegrator(gravity=(0, 0, -10), damping=0)]
     O.dt = 1e-4
-
-
-def test_fmt_time():
-    assert [fmtTime(s) for s in (5, 65, 3725, None, float('inf'))] == ['5s', '1m05s', '1h02m', '?', '?']
 
 
 def test_phase_ends_at_its_time():

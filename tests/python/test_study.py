@@ -1,19 +1,24 @@
-"""Tests of scripts/study.py and scripts/aggregate.py: a tiny study (two very short runs of
-studies/ci.table and a row with a bad parameter) run on this machine's cores AND through a real Dask
-scheduler with two workers on 127.0.0.1, started here and stopped at the end.
+"""End-to-end tests of scripts/study.py and scripts/aggregate.py (the command lines over
+ballast.study; each module has its own test_study_<module>.py): a tiny study (two very short runs
+of studies/ci.table and a row whose stored packing is damaged, a failure only the run finds) run on
+this machine's cores AND through a real Dask scheduler with two workers on 127.0.0.1, started here
+and stopped at the end.
 
-Everything runs as the user runs it: the scripts as subprocesses, each with a bounded timeout."""
+Everything runs as the user runs it: the scripts as subprocesses, each with a bounded timeout.
+SCRIPT (default scripts/oedometer.py) is the oedometer they run."""
 import csv
 import json
 import math
 import os
 import shutil
 import signal
-import socket
 import subprocess
 import time
 
 import pytest
+
+from ballast.oedometer.parameters import check, packingKey
+from study_fakes import freePort
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 PY = '/usr/bin/python3'
@@ -22,8 +27,9 @@ AGGREGATE = os.path.join(ROOT, 'scripts', 'aggregate.py')
 CI_TABLE = os.path.join(ROOT, 'studies', 'ci.table')
 ENV = dict(os.environ, OMP_NUM_THREADS='1')
 RUN_TIMEOUT = 100  # [s] one study.py invocation; the runs take a few seconds each
+SCRIPT = os.environ.get('STUDY_TEST_SCRIPT', os.path.join(ROOT, 'scripts', 'oedometer.py'))
 GOOD = ['seed=1,f=200', 'seed=2,f=200']
-BAD = 'seed=1,f=-1'
+BAD = 'seed=3,f=200'  # its stored packing is damaged: the run fails, the study does not
 # summary.json entries that must agree whichever executor ran the row
 COMPARED = ['peakForce', 'deltaAtPeak', 'deltaMax', 'deltaFinal', 'nCrushed', 'nAbraded', 'volumeLost', 'massFinal', 'nSpheresFinal']
 
@@ -32,22 +38,31 @@ pytestmark = [pytest.mark.skipif(shutil.which('yade') is None, reason='needs yad
               pytest.mark.filterwarnings('ignore:make_current is deprecated:DeprecationWarning')]
 
 
-def tinyTable(path):
-    """studies/ci.table cut to its f=200 rows (seeds 1 and 2) plus a row with f=-1, which
-    oedometer.py rejects: 2 runs that finish and one that fails."""
+def tinyTable(path, f='200'):
+    """studies/ci.table cut to its f=200 rows (seeds 1 and 2) plus the same row with seed 3 (and f
+    as given); returns that row's cells."""
     with open(CI_TABLE) as fh:
         lines = [l.rstrip('\n') for l in fh]
     body = [l for l in lines if l.strip() and not l.lstrip().startswith('#')]
     head = body[0].split()
-    fcol = [h.rstrip('!') for h in head].index('f')
-    rows = [l.split() for l in body[1:] if l.split()[fcol] == '200']
+    names = [h.rstrip('!') for h in head]
+    rows = [l.split() for l in body[1:] if l.split()[names.index('f')] == '200']
     assert len(rows) == 2, 'studies/ci.table should have f=200 rows for seeds 1 and 2'
-    bad = list(rows[0])
-    bad[fcol] = '-1'
+    third = list(rows[0])
+    third[names.index('seed')], third[names.index('f')] = '3', f
     with open(path, 'w') as fh:
         fh.write('# test_study.py: from studies/ci.table\n' + ' '.join(head) + '\n')
-        for r in rows + [bad]:
+        for r in rows + [third]:
             fh.write(' '.join(r) + '\n')
+    return dict(zip(names, third))
+
+
+def damagePacking(row, packings):
+    """A stored packing cut short (a full disk, a killed copy) for this row: the study sees it stored,
+    only the run that reads it finds it damaged."""
+    os.makedirs(packings, exist_ok=True)
+    with open(os.path.join(packings, packingKey(check(row, text=True))[1]), 'w') as fh:
+        fh.write('{"key": {"seed": 3}, "grains": [[0.01, 0.0')
 
 
 def run(args, timeout=RUN_TIMEOUT):
@@ -67,12 +82,6 @@ def run(args, timeout=RUN_TIMEOUT):
         pytest.fail('%s did not finish in %d s:\n%s' % (' '.join(args), timeout, out))
     p.stdout_text, p.seconds = out, time.time() - t0
     return p
-
-
-def freePort():
-    with socket.socket() as s:
-        s.bind(('127.0.0.1', 0))
-        return s.getsockname()[1]
 
 
 def daskCommand(name):
@@ -144,18 +153,20 @@ def study(tmp_path_factory, cluster):
     its own, and locally again."""
     d = tmp_path_factory.mktemp('study')
     table = d / 'tiny.table'
-    tinyTable(table)
+    third = tinyTable(table)
+    damagePacking(third, d / 'packings')  # the packings of the local and the Dask study
+    damagePacking(third, d / 'ship-packings')
     out = {'dir': d, 'table': table, 'local': d / 'local', 'dask': d / 'dask', 'ship': d / 'ship'}
-    out['run1'] = run([STUDY, 'run', str(table), '--out', str(out['local']), '--jobs', '2', '--timeout', '90', '--progress', '10'])
-    out['runDask'] = run([STUDY, 'run', str(table), '--out', str(out['dask']), '--executor', 'dask', '--scheduler', cluster,
-                          '--timeout', '90', '--progress', '10'])
+    common = ['--script', SCRIPT, '--timeout', '90', '--progress', '10']
+    out['run1'] = run([STUDY, 'run', str(table), '--out', str(out['local']), '--jobs', '2'] + common)
+    out['runDask'] = run([STUDY, 'run', str(table), '--out', str(out['dask']), '--executor', 'dask', '--scheduler', cluster] + common)
     # as on machines without a shared file system: script, table and packings go with the task,
     # the results come back through Dask; with packings of its own, built again on the workers
     out['runShip'] = run([STUDY, 'run', str(table), '--out', str(out['ship']), '--executor', 'dask', '--scheduler', cluster,
-                          '--ship', '--packings', str(d / 'ship-packings'), '--timeout', '90', '--progress', '10'])
+                          '--ship', '--packings', str(d / 'ship-packings')] + common)
     out['mtimes'] = {r: os.path.getmtime(out['local'] / 'runs' / r / 'summary.json') for r in GOOD
                      if (out['local'] / 'runs' / r / 'summary.json').exists()}
-    out['run2'] = run([STUDY, 'run', str(table), '--out', str(out['local']), '--jobs', '2', '--timeout', '90'])
+    out['run2'] = run([STUDY, 'run', str(table), '--out', str(out['local']), '--jobs', '2', '--script', SCRIPT, '--timeout', '90'])
     return out
 
 
@@ -170,7 +181,7 @@ def statusRows(d):
 
 
 @pytest.mark.parametrize('executor', ['local', 'dask', 'ship'])
-def test_runs_finish_and_the_bad_row_fails_alone(study, executor):
+def test_runs_finish_and_the_failing_run_fails_alone(study, executor):
     p = study[{'local': 'run1', 'dask': 'runDask', 'ship': 'runShip'}[executor]]
     d = study[executor]
     assert p.returncode == 1, p.stdout_text  # 1: some run failed
@@ -180,11 +191,12 @@ def test_runs_finish_and_the_bad_row_fails_alone(study, executor):
         assert (d / 'runs' / rid / 'fd.csv').exists()
         assert st[rid]['status'] == 'finished'
         assert 'status  : 0 (OK)' in (d / 'logs' / (rid + '.log')).read_text()
-    # the failing row: recorded with its log, which says why
-    assert st[BAD]['status'] == 'failed' and st[BAD]['exitCode'] == '2', st[BAD]
+        with open(d / 'runs' / rid / 'row.json') as fh, open(d / 'study.json') as fs:
+            assert json.load(fh)['codeSha1'] == json.load(fs)['codeSha1']  # the same code here and on the workers
+    # the failing run: recorded with its log, which says why
+    assert st[BAD]['status'] == 'failed' and st[BAD]['exitCode'] not in ('', '0'), st[BAD]
     log = (d / 'logs' / (BAD + '.log')).read_text()
-    assert 'bad parameter f' in log and '(FAILED)' in log
-    assert 'bad parameter f' in st[BAD]['error']
+    assert '(FAILED)' in log and 'Error' in st[BAD]['error'] and st[BAD]['error'] in log, st[BAD]
     assert not (d / 'runs' / BAD).exists()
     assert 'FAILED ' + BAD in p.stdout_text and '2 ok, 1 failed' in p.stdout_text
 
@@ -221,7 +233,7 @@ def test_second_invocation_skips_finished_runs(study):
 
 def test_aggregate_mean_and_std_by_hand(study, tmp_path):
     out = tmp_path / 'agg'
-    p = run([AGGREGATE, str(study['local']), '--out', str(out)], timeout=60)
+    p = run([AGGREGATE, str(study['local']), '--out', str(out), '--param', 'f'], timeout=60)  # f=200 in every row
     assert p.returncode == 0, p.stdout_text
     assert (out / 'fd_curves.png').stat().st_size > 1000 and (out / 'delta_peak.png').stat().st_size > 1000
     d = [summary(study['local'], r)['deltaAtPeak'] for r in GOOD]
@@ -229,7 +241,7 @@ def test_aggregate_mean_and_std_by_hand(study, tmp_path):
     s = math.sqrt(((d[0] - m)**2 + (d[1] - m)**2) / (2 - 1))  # sample standard deviation
     with open(out / 'stats.csv', newline='') as fh:
         rows = list(csv.DictReader(fh))
-    assert len(rows) == 1 and rows[0]['f'] == '200' and rows[0]['n'] == '2'  # the failed f=-1 row has no run
+    assert len(rows) == 1 and rows[0]['f'] == '200' and rows[0]['n'] == '2'  # the failed run is left out
     assert float(rows[0]['deltaAtPeak_mean [m]']) == pytest.approx(m, rel=1e-12)
     assert float(rows[0]['deltaAtPeak_std [m]']) == pytest.approx(s, rel=1e-12)
     c = [summary(study['local'], r)['nCrushed'] for r in GOOD]
@@ -246,19 +258,27 @@ def test_bad_command_line_is_refused_before_any_work(tmp_path):
     cases = [
         ([STUDY, 'run', str(tmp_path / 'missing.table')], 'TABLE'),
         ([STUDY, 'run', str(table), '--executor', 'dask'], '--scheduler'),
-        ([STUDY, 'run', str(table), '--executor', 'dask', '--scheduler', 'tcp://127.0.0.1:%d' % freePort(), '--connect-timeout', '2'],
-         '--scheduler'),
         ([STUDY, 'run', str(table), '--jobs', '0'], '--jobs'),
         ([STUDY, 'run', str(table), '--lines', '2-x'], '--lines'),
         ([STUDY, 'run', str(table), '--timeout', '-5'], '--timeout'),
+        ([STUDY, 'run', str(table), '--time', '5'], '--time'),  # no abbreviations
         ([AGGREGATE, str(tmp_path / 'nothing')], 'STUDY'),
     ]
     for args, name in cases:
         p = run(args + ['--out', str(tmp_path / 'o')] if args[0] == STUDY else args, timeout=30)
         assert p.returncode == 2 and name in p.stdout_text, (args, p.stdout_text)
     assert not (tmp_path / 'o' / 'runs').exists()  # nothing started
-    # a column that is no parameter of oedometer.py is named before anything runs
+    # a column that is no parameter of the oedometer is named before anything runs
     bad = tmp_path / 'b.table'
     bad.write_text('seed fq\n1 2\n')
     p = run([STUDY, 'run', str(bad), '--out', str(tmp_path / 'o')], timeout=30)
     assert p.returncode == 2 and 'fq' in p.stdout_text
+
+
+def test_a_value_out_of_range_is_refused_before_any_run(tmp_path):
+    table = tmp_path / 'f.table'
+    tinyTable(table, f='-1')  # the third row, on line 5
+    p = run([STUDY, 'run', str(table), '--out', str(tmp_path / 'o'), '--script', SCRIPT], timeout=30)
+    assert p.returncode == 2, p.stdout_text
+    assert 'f.table:5: column f, value -1' in p.stdout_text and 'a finite number > 0' in p.stdout_text, p.stdout_text
+    assert not (tmp_path / 'o').exists()  # no run started, no study directory made

@@ -38,7 +38,8 @@ from .loading import MODES
 from .outputs import Outputs
 from .packing import StoredPacking
 from .parameters import OWNER, PARAMS, check
-from .progress import Phases, fmtTime
+from ..names import fmtTime
+from .progress import Phases
 
 STATE_TAG = 'ballast.oedometer'           # the experiment's state (JSON), written by save()
 TOKEN_TAG = 'ballast.oedometer.token'     # which experiment built this scene

@@ -6,16 +6,8 @@ import time
 from yade import O
 from yade.wrapper import PyRunner
 
+from ..names import fmtTime
 from .callbacks import command
-
-
-def fmtTime(s):
-    if s is None or not math.isfinite(s):
-        return '?'
-    s = int(round(s))
-    if s >= 3600:
-        return '%dh%02dm' % (s // 3600, (s % 3600) // 60)
-    return '%dm%02ds' % (s // 60, s % 60) if s >= 60 else '%ds' % s
 
 
 class Phases:

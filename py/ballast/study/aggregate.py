@@ -1,0 +1,243 @@
+"""A study's finished runs as tables and the paper's figures.
+
+    runs.csv         one line per finished run: the studied parameter, seed and the numbers of summary.json
+    stats.csv        one line per value of the studied parameter: number of runs, mean and standard
+                     deviation (sample, n-1) of the displacement at peak force and of the other results
+    fd_curves.png    F-delta curves of all runs coloured by the studied parameter (paper, Fig. 4)
+    delta_peak.png   displacement at peak force against the parameter: one grey line per realization,
+                     mean +- standard deviation as error bars (paper, Fig. 5)
+The studied parameter is the column of the table that varies besides the seed (or the one named).
+Runs not finished are left out and listed.
+"""
+import csv
+import json
+import math
+import os
+
+import numpy as np
+
+from .options import StudyError
+from .table import cellValue
+
+# Results of summary.json carried into the tables; (key, unit)
+RESULTS = [('peakForce', 'N'), ('deltaAtPeak', 'm'), ('deltaMax', 'm'), ('deltaFinal', 'm'), ('nCrushed', '-'),
+           ('nAbraded', '-'), ('volumeLost', 'm^3'), ('massLost', 'kg'), ('massInitial', 'kg'), ('nGrainsInitial', '-'),
+           ('porosity0', '-'), ('wallSeconds', 's'), ('cpuSeconds', 's'), ('steps', '-')]
+STATS = ['deltaAtPeak', 'deltaMax', 'peakForce', 'nCrushed', 'nAbraded', 'massLost', 'wallSeconds']
+LABELS = {'f': 'loading frequency f [Hz]', 'Tc': 'crushing period $T_c$ [s]', 'rMin': '$r_{min}$ [m]', 'ft0': '$f_{t0}$ [Pa m]',
+          'gamma': r'reduction factor $\gamma$ [-]', 'pattern': 'replacement pattern'}
+
+
+def label(v):
+    return '%g' % v if isinstance(v, float) else str(v)
+
+
+def fmt(v):
+    """A CSV cell: floats in full (repr), missing and NaN empty."""
+    if v is None or (isinstance(v, float) and math.isnan(v)):
+        return ''
+    return repr(v) if isinstance(v, float) else str(v)
+
+
+def meanStd(xs):
+    """Mean and sample standard deviation (n-1) of xs; NaN where undefined (std of one run)."""
+    mean = float(np.mean(xs)) if xs else float('nan')
+    return mean, float(np.std(xs, ddof=1)) if len(xs) > 1 else float('nan')
+
+
+class StudyData:
+    """The finished runs of the study directory `path` (written by Study.run), against the studied
+    parameter `param` (default: the only column that varies besides the seed). runs: [{line, runId,
+    value, seed, summary, dir}]; values, seeds: sorted; missing: run ids not finished."""
+
+    def __init__(self, path, param=None):
+        self.dir = os.path.abspath(path)
+        if not os.path.isdir(self.dir):
+            raise StudyError('STUDY: no such directory: %s' % path)
+        info = os.path.join(self.dir, 'study.json')
+        if not os.path.isfile(info):
+            raise StudyError('STUDY: %s is not a study directory of scripts/study.py (no study.json)' % path)
+        with open(info) as fh:
+            self.info = json.load(fh)
+        rows = self.info['rows']
+        cols = [c for c in self.info['columns'] if c != 'description' and not c.startswith('!')]
+        varying = [c for c in cols if c != 'seed' and len(set(r['row'][c] for r in rows)) > 1]
+        if param is not None:
+            if param not in cols:
+                raise StudyError('--param: %r is not a column of the study table (columns: %s)' % (param, ', '.join(cols)))
+            self.param = param
+        elif len(varying) == 1:
+            self.param = varying[0]
+        elif not varying:
+            raise StudyError('STUDY: no column but the seed varies in %s; nothing to aggregate against' % self.info['table'])
+        else:
+            raise StudyError('--param: the table varies %s; say which one is studied' % ', '.join(varying))
+        self.runs, self.missing = [], []
+        for r in rows:
+            d = os.path.join(self.dir, 'runs', r['runId'])
+            try:
+                with open(os.path.join(d, 'summary.json')) as fh:
+                    s = json.load(fh)
+            except (OSError, ValueError):
+                self.missing.append(r['runId'])
+                continue
+            params = s.get('params') or {}
+            # the values as the run read them; from the cell for a summary without them
+            value, seed = (params[k] if k in params else cellValue(k, r['row'].get(k)) for k in (self.param, 'seed'))
+            self.runs.append({'line': r['line'], 'runId': r['runId'], 'value': value, 'seed': seed, 'summary': s, 'dir': d})
+        if not self.runs:
+            raise StudyError('STUDY: no finished run in %s (run it with scripts/study.py run first)' % path)
+        vals = [r['value'] for r in self.runs]
+        self.numeric = all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in vals)
+        self.values = sorted(set(vals), key=(lambda v: v) if self.numeric else (lambda v: (isinstance(v, str), str(v).zfill(8))))
+        self.seeds = sorted(set(r['seed'] for r in self.runs), key=lambda s: (str(type(s)), s))
+
+    def stats(self):
+        """[{value, n, <result>_mean, <result>_std}] per value of the parameter, for the STATS results."""
+        out = []
+        for v in self.values:
+            rs = [r for r in self.runs if r['value'] == v]
+            st = {'value': v, 'n': len(rs)}
+            for k in STATS:
+                st[k + '_mean'], st[k + '_std'] = meanStd([float(r['summary'][k]) for r in rs if r['summary'].get(k) is not None])
+            out.append(st)
+        return out
+
+    def codeVersions(self):
+        """The code sha1s (row.json) the finished runs were made with; None for runs without one."""
+        shas = set()
+        for r in self.runs:
+            try:
+                with open(os.path.join(r['dir'], 'row.json')) as fh:
+                    shas.add(json.load(fh).get('codeSha1'))
+            except (OSError, ValueError):
+                shas.add(None)
+        return shas
+
+
+def writeCsv(data, outDir):
+    """runs.csv and stats.csv in outDir; returns their paths."""
+    runsCsv = os.path.join(outDir, 'runs.csv')
+    with open(runsCsv, 'w', newline='') as fh:
+        w = csv.writer(fh)
+        w.writerow(['line', 'runId', data.param, 'seed'] + ['%s [%s]' % kv for kv in RESULTS])
+        for r in sorted(data.runs, key=lambda r: r['line']):
+            w.writerow([r['line'], r['runId'], label(r['value']), r['seed']] + [fmt(r['summary'].get(k)) for k, _ in RESULTS])
+    statsCsv = os.path.join(outDir, 'stats.csv')
+    units = dict(RESULTS)
+    with open(statsCsv, 'w', newline='') as fh:
+        w = csv.writer(fh)
+        w.writerow([data.param, 'n'] + sum([['%s_mean [%s]' % (k, units[k]), '%s_std [%s]' % (k, units[k])] for k in STATS], []))
+        for st in data.stats():
+            w.writerow([label(st['value']), st['n']] + sum([[fmt(st[k + '_mean']), fmt(st[k + '_std'])] for k in STATS], []))
+    return runsCsv, statsCsv
+
+
+def axisPositions(data, xlog):
+    """x of each parameter value, tick labels and scale. Categories for names (pattern); for numbers
+    spanning decades a log axis (xlog 'auto', or 'yes'; 'no' never), with 0 (Tc = 0: every step)
+    put one step left of the smallest."""
+    vals = data.values
+    if not data.numeric:
+        return {v: i for i, v in enumerate(vals)}, [label(v) for v in vals], 'linear'
+    pos = [v for v in vals if v > 0]
+    useLog = xlog == 'yes' or (xlog == 'auto' and len(pos) >= 3 and max(pos) / min(pos) >= 20 and all(v >= 0 for v in vals))
+    if not useLog:
+        return {v: v for v in vals}, None, 'linear'
+    ratio = (max(pos) / min(pos))**(1 / max(len(pos) - 1, 1))
+    x = {v: (v if v > 0 else min(pos) / ratio) for v in vals}
+    zero = 'every step' if data.param == 'Tc' else '0'
+    return x, [(zero if v == 0 else '%.3g' % v) for v in vals], 'log'
+
+
+def plots(data, outDir, xlog='auto'):
+    """fd_curves.png (Fig. 4) and delta_peak.png (Fig. 5) in outDir; returns their paths."""
+    import matplotlib
+    matplotlib.use('Agg')
+    import matplotlib.pyplot as plt
+    from matplotlib.lines import Line2D
+    cmap = plt.get_cmap('tab10' if len(data.values) <= 10 else 'viridis')
+    color = {v: cmap(i if len(data.values) <= 10 else i / max(len(data.values) - 1, 1)) for i, v in enumerate(data.values)}
+    styles = ['-', '--', ':', '-.', (0, (5, 1, 1, 1, 1, 1))]
+    style = {s: styles[i % len(styles)] for i, s in enumerate(data.seeds)}
+    name = os.path.basename(data.dir)
+
+    # Fig. 4: F-delta of every run
+    fig, ax = plt.subplots(figsize=(8, 5.5))
+    for r in sorted(data.runs, key=lambda r: (data.values.index(r['value']), str(r['seed']))):
+        try:
+            a = np.loadtxt(os.path.join(r['dir'], 'fd.csv'), delimiter=',', skiprows=1, ndmin=2)
+        except (OSError, ValueError):
+            continue
+        ax.plot(a[:, 2] * 1e3, a[:, 1] / 1e3, linestyle=style[r['seed']], color=color[r['value']], lw=0.9)
+    leg = ax.legend(handles=[Line2D([], [], color=color[v], lw=2, label='%s = %s' % (data.param, label(v))) for v in data.values],
+                    fontsize=8, loc='upper left')
+    if len(data.seeds) <= 10:
+        ax.add_artist(leg)
+        ax.legend(handles=[Line2D([], [], color='k', linestyle=style[s], lw=1, label='seed %s' % s) for s in data.seeds],
+                  fontsize=8, loc='lower right')
+    fd = save(fig, ax, r'plate displacement $\delta$ [mm]', 'force F [kN]', '%s: %d runs, %d values of %s, %d realizations' % (
+        name, len(data.runs), len(data.values), data.param, len(data.seeds)), os.path.join(outDir, 'fd_curves.png'))
+
+    # Fig. 5: displacement at peak force against the parameter
+    x, ticks, scale = axisPositions(data, xlog)
+    fig, ax = plt.subplots(figsize=(8, 5))
+    for s in data.seeds:
+        rs = sorted([r for r in data.runs if r['seed'] == s], key=lambda r: data.values.index(r['value']))
+        ax.plot([x[r['value']] for r in rs], [r['summary']['deltaAtPeak'] * 1e3 for r in rs], '-', color='0.7', lw=0.8, zorder=1)
+    st = data.stats()
+    ax.errorbar([x[s['value']] for s in st], [s['deltaAtPeak_mean'] * 1e3 for s in st],
+                yerr=[0 if math.isnan(s['deltaAtPeak_std']) else s['deltaAtPeak_std'] * 1e3 for s in st],
+                fmt='o', color='C0', ecolor='C0', capsize=4, lw=1.5, zorder=3, label='mean $\\pm$ standard deviation')
+    ax.plot([], [], '-', color='0.7', label='one realization (seed)')
+    ax.set_xscale(scale)
+    if ticks is not None:
+        ax.set_xticks([x[v] for v in data.values])
+        ax.set_xticklabels(ticks, rotation=45 if scale == 'log' else 0, ha='right' if scale == 'log' else 'center', fontsize=8)
+        ax.minorticks_off()
+    ax.legend(fontsize=8)
+    dp = save(fig, ax, LABELS.get(data.param, data.param), r'displacement at peak force $\delta$ [mm]',
+              '%s: %d runs, %d realizations' % (name, len(data.runs), len(data.seeds)), os.path.join(outDir, 'delta_peak.png'))
+    return fd, dp
+
+
+def save(fig, ax, xlabel, ylabel, title, path):
+    """Label, grid and write a figure; returns its path."""
+    import matplotlib.pyplot as plt
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.set_title(title, fontsize=10)
+    ax.grid(alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(path, dpi=130)
+    plt.close(fig)
+    return path
+
+
+def aggregate(path, param=None, outDir=None, xlog='auto', figures=True):
+    """Aggregate the study directory `path` into outDir (default <path>/aggregate): the CSV tables,
+    the figures unless figures=False, and a report on standard output."""
+    outDir = outDir or os.path.join(path, 'aggregate')
+    if os.path.exists(outDir) and not os.path.isdir(outDir):
+        raise StudyError('--out: %s exists and is not a directory' % outDir)
+    data = StudyData(path, param)
+    os.makedirs(outDir, exist_ok=True)
+    runsCsv, statsCsv = writeCsv(data, outDir)
+    print('%s: %d finished runs of %d rows; studied parameter %s (%d values), %d realizations' % (
+        data.dir, len(data.runs), len(data.info['rows']), data.param, len(data.values), len(data.seeds)))
+    shas = data.codeVersions()
+    if len(shas) > 1:
+        print('warning: the runs were made by %d versions of the code (sha1 %s; None: runs without a code sha1)' % (
+            len(shas), ', '.join(sorted(str(x)[:10] for x in shas))))
+    if data.missing:
+        print('not finished (left out): %d: %s%s' % (len(data.missing), ', '.join(data.missing[:8]),
+                                                     ' ...' if len(data.missing) > 8 else ''))
+    print('%-12s %3s  %22s  %22s  %16s' % (data.param, 'n', 'delta at peak [mm]', 'delta max [mm]', 'crushed'))
+    for st in data.stats():
+        print('%-12s %3d  %10.2f +- %8.2f  %10.2f +- %8.2f  %6.1f +- %5.1f' % (
+            label(st['value']), st['n'], st['deltaAtPeak_mean'] * 1e3, st['deltaAtPeak_std'] * 1e3, st['deltaMax_mean'] * 1e3,
+            st['deltaMax_std'] * 1e3, st['nCrushed_mean'], st['nCrushed_std']))
+    print('tables: %s, %s' % (runsCsv, statsCsv))
+    if figures:
+        print('figures: %s, %s' % plots(data, outDir, xlog))
+    return data

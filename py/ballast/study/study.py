@@ -1,0 +1,353 @@
+"""A study: the rows of a table run into a study directory, with the bookkeeping that lets it stop
+and carry on.
+
+A study directory holds
+    runs/<run id>/      finished runs: the oedometer's output (summary.json, fd.csv, ...) and row.json
+    logs/<run id>.log   the log of the last attempt of every run, with yade-batch's job summary at the end
+    failed/<run id>/    what the last failed attempt left (removed once the run succeeds)
+    status.csv          one line per table row: status, exit code, duration, host
+    journal.jsonl       every attempt, appended
+    table, study.json   the table as it was run (the runs read their row from it, as under yade-batch)
+                        and the study's description (rows, run ids, script, code sha1)
+A run counts as finished when runs/<run id>/summary.json exists: a study started again skips those
+and redoes the rest.
+
+Packings are stored in the packings directory (default: 'packings' next to the study directory,
+shared by the studies there) under the name ballast.oedometer.parameters.packingKey gives, and
+reused by every run with the same seed and packing parameters. Of the rows that need the same
+packing not stored yet, one runs first and builds it; the others wait for it.
+"""
+import csv
+import io
+import json
+import os
+import re
+import shutil
+import threading
+import time
+import uuid
+
+from ..names import fmtTime
+from ..oedometer.parameters import packingKey
+from .files import codeSha1, sha1, writeAtomic
+from .options import OPTIONS, StudyError, optionValue
+from .runner import failedLog, finalizeShipped, lastError
+from .table import Table
+
+# yade-batch's !COLUMNS that are not environment variables of the run
+BATCH_COLUMNS = ('!SCRIPT', '!EXEC', '!AFFINITY', '!COUNT')
+
+
+def defaultOut(table):
+    """results/studies/<table name without .table>."""
+    return os.path.join('results', 'studies', re.sub(r'\.table$', '', os.path.basename(table)))
+
+
+class Study:
+    """The rows of `table` (a yade-batch table of oedometer parameters) run by `script` (the
+    oedometer's command line) into `out` (default :func:`defaultOut`). packings: the packing store
+    (default 'packings' next to `out`); lines: yade-batch's --lines (default: every row); yade: the
+    executable on the machines that run; nice, timeout, progress: see options.OPTIONS; ship: send
+    script, table and packings with every Dask task and the results back, even to workers that see
+    `out`; skipFailed: do not redo runs that failed before; verbose: a line when a run starts.
+    Everything is checked here, before any run: a bad table row is refused naming line and column."""
+
+    def __init__(self, table, script, out=None, packings=None, lines=None, yade='yade', nice=OPTIONS['nice'].default,
+                 timeout=None, ship=False, skipFailed=False, progress=OPTIONS['progress'].default, verbose=False):
+        if not os.path.isfile(table):
+            raise StudyError('TABLE: no such file: %s' % table)
+        if not os.path.isfile(script):
+            raise StudyError('--script: no such file: %s' % script)
+        self.tablePath, self.script = table, os.path.abspath(script)
+        with open(self.script) as fh:
+            self.scriptText = fh.read()
+        self.codeSha1 = codeSha1(self.scriptText)
+        self.yade, self.ship, self.skipFailed, self.verbose = yade, ship, skipFailed, verbose
+        self.nice, self.timeout = optionValue('nice', nice), optionValue('timeout', timeout)
+        self.progress = optionValue('progress', progress)
+        lines = optionValue('lines', lines)
+        self.table = Table(table)
+        self.params = self.table.check()  # line -> every parameter of its run
+        self.out = os.path.abspath(out or defaultOut(table))
+        self.packings = os.path.abspath(packings or os.path.join(os.path.dirname(self.out), 'packings'))
+        for name, p in (('--out', self.out), ('--packings', self.packings)):
+            if ':' in p:
+                raise StudyError("%s: %s contains ':', which YADE_BATCH (table:line) cannot carry" % (name, p))
+            if os.path.exists(p) and not os.path.isdir(p):
+                raise StudyError('%s: %s exists and is not a directory' % (name, p))
+        have = [n for n, _ in self.table.rows]
+        self.lines = lines or have
+        if set(self.lines) - set(have):
+            raise StudyError('--lines: line(s) %s of %s hold no row; rows are on lines %s' % (
+                ','.join(str(n) for n in self.lines if n not in have), table, ','.join(map(str, have))))
+        self.rows = dict(self.table.rows)
+        self.t0 = time.time()
+
+    def say(self, msg):
+        print('[study %8s] %s' % (fmtTime(time.time() - self.t0), msg), flush=True)
+
+    def packingName(self, line):
+        """File name of the packing the run of this line needs (in the packings directory)."""
+        return packingKey(self.params[line])[1]
+
+    def finishedRow(self, line):
+        """None if the run is not finished; else its row.json ({} if unreadable)."""
+        d = os.path.join(self.out, 'runs', self.table.runId(line))
+        if not os.path.exists(os.path.join(d, 'summary.json')):
+            return None
+        try:
+            with open(os.path.join(d, 'row.json')) as fh:
+                return json.load(fh)
+        except (OSError, ValueError):
+            return {}
+
+    def dryRun(self):
+        for n in self.lines:
+            print('%4d  %-40s %s' % (n, self.table.runId(n), 'to run' if self.finishedRow(n) is None else 'finished (skipped)'))
+
+    def lock(self):
+        import fcntl
+        os.makedirs(self.out, exist_ok=True)
+        self.lockFile = open(os.path.join(self.out, '.lock'), 'a+')
+        try:
+            fcntl.flock(self.lockFile, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except OSError:
+            raise StudyError('--out: %s is being run by another study right now' % self.out) from None
+
+    def prepare(self):
+        """The study directory set up before the first run starts; returns how many unfinished
+        attempts an interrupted study had left (removed: they are redone)."""
+        self.lock()
+        for d in ('runs', 'logs', 'failed'):
+            os.makedirs(os.path.join(self.out, d), exist_ok=True)
+        os.makedirs(self.packings, exist_ok=True)
+        # a finished run made from a row that has changed since would be mixed into the results
+        stale = []
+        for n in self.lines:
+            rr, row = self.finishedRow(n), self.rows[n]
+            if rr and rr.get('row') is not None and rr['row'] != row:
+                diff = ', '.join('%s %s -> %s' % (k, rr['row'].get(k), row.get(k))
+                                 for k in sorted(set(rr['row']) | set(row)) if rr['row'].get(k) != row.get(k))
+                stale.append('%s (line %d: %s)' % (self.table.runId(n), n, diff))
+        if stale:
+            raise StudyError('%s: finished run(s) in %s/runs were made from other values than the table now gives: %s. '
+                             'Remove those run directories or choose another --out.' % (
+                                 self.tablePath, self.out, '; '.join(stale[:5])))
+        work = os.path.join(self.out, 'work')
+        left = os.listdir(work) if os.path.isdir(work) else []
+        shutil.rmtree(work, ignore_errors=True)
+        os.makedirs(work)
+        self.token = uuid.uuid4().hex
+        writeAtomic(os.path.join(self.out, '.study-token'), self.token)
+        writeAtomic(os.path.join(self.out, 'table'), self.table.text)
+        info = {'table': os.path.abspath(self.tablePath), 'tableSha1': sha1(self.table.text), 'script': self.script,
+                'codeSha1': self.codeSha1, 'packings': self.packings, 'columns': self.table.columns,
+                'rows': [{'line': n, 'runId': self.table.runId(n), 'row': r} for n, r in self.table.rows]}
+        writeAtomic(os.path.join(self.out, 'study.json'), json.dumps(info, indent=1))
+        self.status = {}
+        for n in self.lines:
+            failed = os.path.isdir(os.path.join(self.out, 'failed', self.table.runId(n)))
+            self.status[n] = {'status': 'finished' if self.finishedRow(n) is not None else ('failed' if failed else 'todo')}
+        return len(left)
+
+    def tasks(self, todo, executorName):
+        """The runs of `todo` in table order: {'spec': what runner.runRow needs, 'leader': None or the
+        run id of the run that builds the packing this one needs}. Of the runs that need the same
+        packing not stored yet, the one with the shortest loading cycle (highest f) leads."""
+        groups = {}
+        for n in todo:
+            groups.setdefault(self.packingName(n), []).append(n)
+        leaderOf = {}
+        for name, lines in groups.items():
+            if len(lines) > 1 and not os.path.exists(os.path.join(self.packings, name)):
+                lead = min(lines, key=lambda n: (1 / self.params[n]['f'], lines.index(n)))
+                leaderOf.update((n, self.table.runId(lead)) for n in lines if n != lead)
+        tasks = []
+        for n in todo:
+            env = {'OMP_NUM_THREADS': '1'}
+            for c, v in self.rows[n].items():  # yade-batch's !COLUMNS: threads of the run, or an environment variable
+                if c in ('!OMP_NUM_THREADS', '!THREADS'):
+                    env['OMP_NUM_THREADS'] = str(v)
+                elif c.startswith('!') and c not in BATCH_COLUMNS:
+                    env[c[1:]] = str(v)
+            pfiles = {}
+            stored = os.path.join(self.packings, self.packingName(n))
+            if os.path.exists(stored):
+                with open(stored, 'rb') as fh:
+                    pfiles[self.packingName(n)] = fh.read()
+            spec = {'runId': self.table.runId(n), 'line': n, 'row': self.rows[n], 'tableText': self.table.text,
+                    'tableName': os.path.abspath(self.tablePath), 'scriptPath': self.script, 'scriptText': self.scriptText,
+                    'yade': self.yade, 'nice': self.nice, 'env': env, 'out': self.out, 'token': self.token,
+                    'packings': self.packings, 'packingFiles': pfiles, 'timeout': self.timeout, 'executor': executorName,
+                    'ship': self.ship}
+            tasks.append({'spec': spec, 'leader': leaderOf.get(n)})
+        return tasks
+
+    def writeStatus(self):
+        buf = io.StringIO()
+        w = csv.writer(buf, lineterminator='\n')  # run ids hold commas: quoted
+        w.writerow(['line', 'runId', 'status', 'exitCode', 'wallSeconds', 'host', 'error'])
+        for n in self.lines:
+            s = self.status[n]
+            w.writerow([n, self.table.runId(n), s['status'], '' if s.get('rc') is None else s['rc'],
+                        '' if s.get('wall') is None else '%.1f' % s['wall'], s.get('host', ''), s.get('error') or ''])
+        writeAtomic(os.path.join(self.out, 'status.csv'), buf.getvalue())
+
+    def run(self, executor):
+        """Run (or carry on) the study with `executor` (ballast.study.executors). Returns the exit
+        status of scripts/study.py: 0 all finished, 1 some run failed, 130 interrupted."""
+        cleaned = self.prepare()
+        todo = [n for n in self.lines if self.status[n]['status'] != 'finished']
+        nDone = len(self.lines) - len(todo)
+        if self.skipFailed:
+            todo = [n for n in todo if self.status[n]['status'] != 'failed']
+        self.say('%s: %d rows%s, %d finished before (skipped), %d to run; results in %s' % (
+            self.tablePath, len(self.lines), '' if len(self.lines) == len(self.table.rows) else ' (--lines)', nDone, len(todo),
+            self.out))
+        if cleaned:
+            self.say('removed %d unfinished attempt(s) left by an interrupted study; their runs are redone' % cleaned)
+        old = {}
+        for n in self.lines:
+            made = (self.finishedRow(n) or {}).get('codeSha1')
+            if made not in (None, self.codeSha1):
+                old[made] = old.get(made, 0) + 1
+        if old:
+            self.say('warning: %d finished run(s) were made by another version of %s or of the ballast package (code sha1 %s); '
+                     'they are kept, not redone' % (sum(old.values()), self.script, ', '.join(k[:10] for k in old)))
+        tasks = self.tasks(todo, executor.name)
+        nLead = len(set(t['leader'] for t in tasks if t['leader']))
+        if nLead:
+            self.say('%d run(s) wait for the packing one of %d other run(s) builds first' % (
+                len([t for t in tasks if t['leader']]), nLead))
+        self.say('executor %s: %s' % (executor.name, executor.describe()))
+        self.writeStatus()
+        if not todo:
+            self.say('nothing to run')
+            return 0
+        return Progress(self, executor, len(todo)).run(tasks)
+
+
+class Progress:
+    """The bookkeeping while a study runs: status.csv, journal.jsonl, a line per finished run and
+    every `progress` seconds a line on the runs going on."""
+
+    def __init__(self, study, executor, nTodo):
+        self.study, self.executor, self.nTodo = study, executor, nTodo
+        self.counts = {'ok': 0, 'failed': 0}
+        self.walls = []
+        self.running = {}  # run id -> start time
+        self.lock = threading.Lock()
+
+    def onStart(self, t, quiet=False):
+        with self.lock:
+            self.running[t['spec']['runId']] = time.time()
+            self.study.status[t['spec']['line']]['status'] = 'submitted' if quiet else 'running'
+        if not quiet and self.study.verbose:
+            self.study.say('start  %s (line %d)' % (t['spec']['runId'], t['spec']['line']))
+
+    def onDone(self, t, res):
+        st = self.study
+        if not res.get('finalized'):
+            if res.get('files') is not None:
+                finalizeShipped(st.out, st.packings, res)
+            elif res.get('log'):
+                # the machinery failed before the run had output: what is known goes to its log
+                writeAtomic(os.path.join(st.out, 'logs', res['runId'] + '.log'), res['log'])
+        n = t['spec']['line']
+        with self.lock:
+            self.running.pop(res['runId'], None)
+            ok = res['status'] == 'ok'
+            self.counts['ok' if ok else 'failed'] += 1
+            if ok and res.get('wall'):
+                self.walls.append(res['wall'])
+            st.status[n] = {'status': 'finished' if ok else res['status'], 'rc': res.get('rc'), 'wall': res.get('wall'),
+                            'host': res.get('host', ''), 'error': res.get('error', '')}
+            rec = {k: res.get(k) for k in ('runId', 'line', 'status', 'rc', 'host', 'started', 'wall', 'error', 'command')}
+            rec['executor'] = self.executor.name
+            self.journal.write(json.dumps(rec) + '\n')
+            self.journal.flush()
+            st.writeStatus()
+            done = self.counts['ok'] + self.counts['failed']
+            left = self.nTodo - done
+            eta = ''
+            if self.walls and left:
+                # remaining runs spread over the slots, at the mean duration so far
+                eta = ', ETA %s' % fmtTime(sum(self.walls) / len(self.walls) * -(-left // max(1, min(self.executor.slots, left))))
+            tally = '[%d/%d, %d failed%s]' % (done, self.nTodo, self.counts['failed'], eta)
+            if ok:
+                s = res['summary'] or {}
+                st.say('ok     %s (line %d) %s on %s: peak F %.0f kN at delta %.2f mm, %s crushed  %s' % (
+                    res['runId'], n, fmtTime(res.get('wall')), res.get('host'), s.get('peakForce', float('nan')) / 1e3,
+                    s.get('deltaAtPeak', float('nan')) * 1e3, s.get('nCrushed', '?'), tally))
+            else:
+                st.say('%-6s %s (line %d) %s: %s; log %s  %s' % (
+                    res['status'].upper(), res['runId'], n, fmtTime(res.get('wall')), res.get('error'),
+                    os.path.join(st.out, 'logs', res['runId'] + '.log'), tally))
+
+    def heartbeat(self, stop):
+        while not stop.wait(self.study.progress):
+            with self.lock:
+                now = time.time()
+                run = sorted(self.running.items(), key=lambda kv: kv[1])
+                done = self.counts['ok'] + self.counts['failed']
+            if self.executor.name == 'local':
+                what = ', '.join('%s %s' % (k, fmtTime(now - v)) for k, v in run[:6]) + (' ...' if len(run) > 6 else '')
+                self.study.say('%d/%d done, running: %s' % (done, self.nTodo, what or '-'))
+                continue
+            held = self.executor.processing()
+            if held is None:
+                self.study.say('%d/%d done, %d queued or running on the cluster' % (done, self.nTodo, len(run)))
+            else:
+                self.study.say('%d/%d done, %d on the workers (%s%s), %d waiting' % (
+                    done, self.nTodo, len(held), ', '.join(sorted(held)[:6]), ' ...' if len(held) > 6 else '', len(run) - len(held)))
+
+    def run(self, tasks):
+        st = self.study
+        t0 = time.time()
+        stop = threading.Event()
+        threading.Thread(target=self.heartbeat, args=(stop,), daemon=True).start()
+        self.journal = open(os.path.join(st.out, 'journal.jsonl'), 'a')
+        try:
+            self.executor.run(tasks, self.onDone, self.onStart)
+        except KeyboardInterrupt:
+            for n in st.lines:
+                if st.status[n]['status'] in ('running', 'submitted'):
+                    st.status[n]['status'] = 'todo'
+            st.writeStatus()
+            st.say('interrupted: %d ok, %d failed; the same command carries on where this stopped' % (
+                self.counts['ok'], self.counts['failed']))
+            return 130
+        finally:
+            stop.set()
+            self.journal.close()
+        st.writeStatus()
+        st.say('done in %s: %d ok, %d failed%s; status in %s' % (
+            fmtTime(time.time() - t0), self.counts['ok'], self.counts['failed'],
+            ' (their logs: %s/logs)' % st.out if self.counts['failed'] else '', os.path.join(st.out, 'status.csv')))
+        return 0 if self.counts['failed'] == 0 else 1
+
+
+def status(out):
+    """Print what a study directory holds: finished, failed (with the line of the log that says
+    why) and still to run."""
+    out = os.path.abspath(out)
+    path = os.path.join(out, 'study.json')
+    if not os.path.exists(path):
+        raise StudyError('OUT: %s is not a study directory (no study.json)' % out)
+    with open(path) as fh:
+        info = json.load(fh)
+    counts = {}
+    for r in info['rows']:
+        rid = r['runId']
+        if os.path.exists(os.path.join(out, 'runs', rid, 'summary.json')):
+            st = 'finished'
+        elif os.path.isdir(os.path.join(out, 'failed', rid)) or failedLog(os.path.join(out, 'logs', rid + '.log')):
+            st = 'failed'
+        else:
+            st = 'todo'
+        counts.setdefault(st, []).append(rid)
+    print('%s (%s): %d rows: %s' % (out, info['table'], len(info['rows']),
+                                    ', '.join('%d %s' % (len(v), k) for k, v in sorted(counts.items()))))
+    for rid in counts.get('failed', []):
+        log = os.path.join(out, 'logs', rid + '.log')
+        print('  failed: %s: %s (log %s)' % (rid, lastError(log), log))

@@ -1,0 +1,178 @@
+"""Study tables: yade-batch tables whose columns are parameters of the oedometer
+(:data:`ballast.oedometer.parameters.PARAMS`). They are read by YADE's own reader,
+``yade.utils.TableParamReader``, so rows, line numbers and run descriptions are yade-batch's, and
+every cell is checked against the declarations before any run starts.
+"""
+import atexit
+import contextlib
+import io
+import itertools
+import os
+import re
+import shutil
+import sys
+import tempfile
+import warnings
+
+from ..names import runDirName
+from ..oedometer.parameters import PARAMS, check
+from ..params import ParamError, literal
+from .options import StudyError
+
+# Where Debian 12's yade keeps its Python modules (the dist-packages link of python3-yade is broken).
+YADE_PY = '/usr/lib/x86_64-linux-gnu/yade-double/py'
+# Set by the study for every run: not table columns.
+STUDY_SETS = ('results', 'runId', 'packingDir')
+
+
+def tableReader():
+    """yade.utils.TableParamReader in plain /usr/bin/python3. Importing YADE boots it (measured with
+    YADE 2023.02a on Debian 12: 0.5 s, once a process). What else it does: it prints a banner on
+    stdout (kept out of ours: `study.py grid` writes its table there) and deprecation warnings,
+    makes an empty /tmp/yade-XXXXXX that only yade's own exit removes (removed here at exit), and
+    starts one idle OpenMP thread unless OMP_NUM_THREADS=1; no Python thread, no signal handler."""
+    if 'yade.utils' not in sys.modules:
+        if YADE_PY not in sys.path:
+            sys.path.append(YADE_PY)
+        try:
+            with contextlib.redirect_stdout(io.StringIO()), warnings.catch_warnings():
+                warnings.simplefilter('ignore', DeprecationWarning)  # YADE's imports (imp, escapes), not ours
+                import yade.utils
+        except ImportError as e:
+            raise StudyError('reading a table needs YADE (yade.utils.TableParamReader), not importable here: %s' % e)
+        atexit.register(shutil.rmtree, os.path.dirname(yade.Omega().tmpFilename()), True)
+    return sys.modules['yade.utils'].TableParamReader
+
+
+class Table:
+    """A yade-batch table as yade-batch reads it. ``rows``: [(line, {column: cell text})] with the
+    file's 1-based line numbers, '=' resolved; ``columns`` as YADE names them ('!' of run-id columns
+    removed unless there is a description column); ``runId(line)``: the row's description (the
+    description column, else name=value of the 'name!' columns, else of all columns) made a directory
+    name by :func:`ballast.names.runDirName`.
+
+    Refused, naming the line, where YADE's reader would fail or guess: an empty table, a row with
+    another number of cells than there are column names, '=' on the first row (YADE takes the last
+    row's value), a column twice, two rows with the same run id (YADE appends '__line=N__', an id
+    that changes when lines move)."""
+
+    def __init__(self, path, text=None):
+        self.path = path
+        if text is None:
+            with open(path) as fh:
+                text = fh.read()
+        # the reader cuts the last character of every line, meant to be the newline
+        self.text = text if text.endswith('\n') else text + '\n'
+        # the lines as the reader splits them, only to name a line it would misread
+        split = [re.sub(r'\s*#.*', '', l).split() for l in self.text.split('\n')[:-1]]
+        cells = {n: c for n, c in enumerate(split, 1) if c}
+        if not cells:
+            raise StudyError('%s: the table is empty (its first non-empty line names the columns)' % path)
+        head = min(cells)
+        heads = cells.pop(head)
+        if not cells:
+            raise StudyError('%s: no rows below the column names on line %d' % (path, head))
+        for n, c in sorted(cells.items()):
+            if len(c) != len(heads):
+                raise StudyError('%s:%d: %d cells, but line %d names %d columns (cells are separated by blanks, '
+                                 'no quoting of blanks)' % (path, n, len(c), head, len(heads)))
+        top = min(cells)
+        if '=' in cells[top]:
+            raise StudyError("%s:%d: '=' in column %s repeats the row above, but this is the first row" % (
+                path, top, heads[cells[top].index('=')]))
+        with tempfile.NamedTemporaryFile('w', prefix='study-', suffix='.table') as fh:
+            fh.write(self.text)
+            fh.flush()
+            values = tableReader()(fh.name).paramDict()
+        self.hasDescription = 'description' in heads
+        self.columns = [c for c in values[top] if c != 'description' or self.hasDescription]
+        if len(self.columns) != len(heads):
+            raise StudyError('%s:%d: a column appears twice in %s' % (path, head, ' '.join(heads)))
+        self.rows = [(n, {c: values[n][c] for c in self.columns}) for n in sorted(values)]
+        self.ids = {}
+        seen = {}
+        for n, _ in self.rows:
+            desc = values[n]['description']
+            if not self.hasDescription and desc.endswith('__line=%d__' % n):  # YADE's mark of a repeat
+                desc = desc[:-len('__line=%d__' % n)]
+            rid = runDirName(desc)
+            if rid in seen:
+                raise StudyError('%s:%d: the row gives the run id %r, as line %d does; make the rows differ or add a '
+                                 'description column' % (path, n, rid, seen[rid]))
+            seen[rid] = n
+            self.ids[n] = rid
+
+    def runId(self, line):
+        return self.ids[line]
+
+    def parameterColumns(self):
+        """The columns that are parameters (not the description, not yade-batch's !COLUMNS)."""
+        return [c for c in self.columns if c != 'description' and not c.startswith('!')]
+
+    def check(self):
+        """{line: every parameter of its run} (ballast.oedometer.parameters.check of the row's cells),
+        before any run starts. Columns that are no parameter, and every bad cell, are refused
+        together in one StudyError naming table, line, column and value."""
+        cols = self.parameterColumns()
+        unknown = [c for c in cols if c not in PARAMS]
+        if unknown:
+            raise StudyError('%s: column(s) %s are not parameters of the oedometer; parameters: %s' % (
+                self.path, ', '.join(unknown), ', '.join(PARAMS)))
+        ours = [c for c in cols if c in STUDY_SETS]
+        if ours:
+            raise StudyError('%s: column(s) %s are set by the study for every run; remove them from the table' % (
+                self.path, ', '.join(ours)))
+        params, bad = {}, []
+        for n, row in self.rows:
+            try:
+                params[n] = check({c: row[c] for c in cols}, text=True)
+            except ParamError as e:
+                if e.name in row:
+                    bad.append('%s:%d: column %s, value %s: %s' % (self.path, n, e.name, row[e.name], e))
+                else:  # a check between parameters, on one the row does not set
+                    bad.append('%s:%d: %s (the row: %s)' % (self.path, n, e, ', '.join('%s=%s' % kv for kv in row.items())))
+        if bad:
+            raise StudyError('%d row(s) refused:\n  %s%s' % (
+                len(bad), '\n  '.join(bad[:10]), '\n  ...' if len(bad) > 10 else ''))
+        return params
+
+
+def cellValue(column, cell):
+    """A cell as the oedometer reads it (a parameter's own parser; other columns as literals)."""
+    return PARAMS[column].fromText(cell) if column in PARAMS else literal(cell)
+
+
+def gridValues(spec):
+    """NAME=V1,V2,... or NAME=A:B (the integers A to B): (NAME, [cell text])."""
+    m = re.fullmatch(r'([A-Za-z_]\w*!?)=(.+)', spec)
+    if not m:
+        raise StudyError('grid: %r is not NAME=V1,V2,... or NAME=A:B' % spec)
+    name, vals = m.group(1), m.group(2)
+    r = re.fullmatch(r'(-?\d+):(-?\d+)', vals)
+    if r:
+        a, b = int(r.group(1)), int(r.group(2))
+        if b < a:
+            raise StudyError('grid: %s: empty range %s' % (name, vals))
+        return name, [str(v) for v in range(a, b + 1)]
+    out = [v.strip() for v in vals.split(',')]
+    if any(not v or re.search(r'\s', v) for v in out):
+        raise StudyError('grid: %s: empty value or blank inside a value in %r' % (name, vals))
+    return name, out
+
+
+def gridTable(axes, fixed=(), comments=(), command=''):
+    """The text of a table with every combination of the values of `axes` (NAME=VALUES, the first
+    varies slowest) and the `fixed` columns (NAME=V); refused like a table to run if a row is bad."""
+    axes = [gridValues(s) for s in axes]
+    fixed = [gridValues(s) for s in fixed]
+    for name, vals in fixed:
+        if len(vals) != 1:
+            raise StudyError('--fixed: %s takes one value, got %s' % (name, ','.join(vals)))
+    names = [n for n, _ in axes + fixed]
+    rows = [list(c) + [v[0] for _, v in fixed] for c in itertools.product(*[v for _, v in axes])]
+    widths = [max(len(x) for x in [n] + [r[i] for r in rows]) for i, n in enumerate(names)]
+    text = ''.join('# %s\n' % c for c in comments) + ('# written by: %s\n' % command if command else '')
+    for r in [names] + rows:
+        text += ' '.join(x.ljust(w) for x, w in zip(r, widths)).rstrip() + '\n'
+    Table('grid', text).check()  # what it writes must run
+    return text, len(rows)

@@ -1,0 +1,69 @@
+"""Helpers of the ballast.study tests. A stand-in for yade for the tests that need no simulation
+(test_study_runner.py, test_study_study.py): it keeps the oedometer's command-line contract,
+
+    fake-yade [--nice=N] -n -x SCRIPT --results DIR --runId ID --packingDir DIR   (YADE_BATCH=table:line)
+
+builds the packing its row needs when it is not stored, and writes DIR/ID/summary.json, fd.csv and
+seen.json (what it was given). The environment variable FAKE (a '!FAKE' column of the table) makes
+it fail (exit 3, leaving a partial output), hang (with a child process), or end without a summary."""
+import os
+import socket
+
+FAKE_YADE = r'''#!/usr/bin/python3
+import json, os, subprocess, sys, time
+from ballast.oedometer.parameters import check, packingKey
+
+argv = sys.argv[1:]
+script = argv[argv.index('-x') + 1]
+opts = dict(zip(argv[argv.index('-x') + 2::2], argv[argv.index('-x') + 3::2]))
+table, line = os.environ['YADE_BATCH'].rsplit(':', 1)
+with open(table) as fh:
+    lines = fh.read().split('\n')
+rows = [l.split() for l in lines if l.strip() and not l.startswith('#')]
+cells = dict(zip([h[:-1] if h.endswith('!') else h for h in rows[0]], lines[int(line) - 1].split()))
+p = check({k: v for k, v in cells.items() if not k.startswith('!') and k != 'description'}, text=True)
+out = os.path.join(opts['--results'], opts['--runId'])
+os.makedirs(out)
+with open(os.path.join(out, 'seen.json'), 'w') as fh:
+    json.dump({'argv': argv, 'script': open(script).read(), 'OMP_NUM_THREADS': os.environ.get('OMP_NUM_THREADS'),
+               'packings': sorted(os.listdir(opts['--packingDir']))}, fh)
+mode = os.environ.get('FAKE', 'ok')
+print('fake yade: run %s, mode %s' % (opts['--runId'], mode), flush=True)
+if mode == 'fail':
+    open(os.path.join(out, 'partial.txt'), 'w').close()
+    print('RuntimeError: the fake failed on purpose')
+    sys.exit(3)
+if mode == 'hang':
+    subprocess.Popen(['sleep', '120'])
+    time.sleep(120)
+if mode == 'nosummary':
+    sys.exit(0)
+packing = os.path.join(opts['--packingDir'], packingKey(p)[1])
+if not os.path.exists(packing):
+    with open(packing + '.tmp', 'w') as fh:
+        json.dump({'key': packingKey(p)[0], 'builtBy': opts['--runId']}, fh)
+    os.replace(packing + '.tmp', packing)
+with open(packing) as fh:
+    builtBy = json.load(fh)['builtBy']
+with open(os.path.join(out, 'fd.csv'), 'w') as fh:
+    fh.write('t,F,delta,nCrushed,nAbraded\n0,0,0,0,0\n0.1,%r,0.001,1,0\n' % (1000. * p['f']))
+with open(os.path.join(out, 'summary.json'), 'w') as fh:
+    json.dump({'params': p, 'peakForce': 1000. * p['f'] + p['seed'], 'deltaAtPeak': 1e-3 * p['seed'], 'nCrushed': p['seed'],
+               'packingFile': packing, 'packingBuiltBy': builtBy}, fh)
+'''
+
+
+def writeFakeYade(directory):
+    """The fake yade as an executable in `directory`; returns its path."""
+    path = os.path.join(str(directory), 'fake-yade')
+    with open(path, 'w') as fh:
+        fh.write(FAKE_YADE)
+    os.chmod(path, 0o755)
+    return path
+
+
+def freePort():
+    """A TCP port of 127.0.0.1 nobody listens on (for a scheduler to start there, or to find none)."""
+    with socket.socket() as s:
+        s.bind(('127.0.0.1', 0))
+        return s.getsockname()[1]

@@ -1,0 +1,115 @@
+"""Tests of ballast.study.aggregate on fabricated study directories (study.json and summary.json
+files written here, no yade): mean and sample standard deviation by hand, the studied parameter,
+runs not finished, the axis of Fig. 5, the report. The figures are drawn by test_study.py."""
+import csv
+import json
+import math
+import os
+
+import pytest
+
+from ballast.study.aggregate import StudyData, aggregate, axisPositions, writeCsv
+from ballast.study.options import StudyError
+
+# (seed, Tc [s], delta at peak [m], crushed); seed 3 at Tc = 0.01 and seeds 2-3 at 0.04 did not finish
+RUNS = [(1, 0, 0.050, 10), (2, 0, 0.056, 14), (3, 0, 0.047, 9), (1, 1e-4, 0.040, 7), (2, 1e-4, 0.031, 3), (3, 1e-4, 0.052, 12),
+        (1, 0.01, 0.022, 2), (2, 0.01, 0.025, 4), (1, 0.04, 0.020, 1)]
+MISSING = [(3, 0.01), (2, 0.04), (3, 0.04)]
+
+
+def rid(seed, tc, **more):
+    return ','.join('%s=%s' % kv for kv in [('seed', seed), ('Tc', tc)] + sorted(more.items()))
+
+
+def fabricate(d, runs=RUNS, missing=MISSING, more=None, params=True, code=('a' * 40,)):
+    """A study directory as Study.run leaves it: `more` adds columns (name -> value per run)."""
+    os.makedirs(str(d), exist_ok=True)
+    rows = []
+    for i, (seed, tc) in enumerate([r[:2] for r in runs] + missing):
+        extra = {k: str(v(i)) for k, v in (more or {}).items()}
+        rows.append({'line': i + 2, 'runId': rid(seed, tc, **extra), 'row': dict({'seed': str(seed), 'Tc': str(tc)}, **extra)})
+    for i, (seed, tc, delta, crushed) in enumerate(runs):
+        run = os.path.join(d, 'runs', rows[i]['runId'])
+        os.makedirs(run)
+        s = {'deltaAtPeak': delta, 'deltaMax': 2 * delta, 'peakForce': 1.5e6, 'nCrushed': crushed, 'nAbraded': 0}
+        if params:
+            s['params'] = dict({'seed': seed, 'Tc': float(tc)}, **{k: float(v(i)) for k, v in (more or {}).items()})
+        with open(os.path.join(run, 'summary.json'), 'w') as fh:
+            json.dump(s, fh)
+        with open(os.path.join(run, 'row.json'), 'w') as fh:
+            json.dump({'codeSha1': code[i % len(code)]}, fh)
+    with open(os.path.join(d, 'study.json'), 'w') as fh:
+        json.dump({'table': 'Tc.table', 'columns': ['seed', 'Tc'] + list(more or {}), 'rows': rows}, fh)
+    return str(d)
+
+
+def byHand(xs):
+    m = sum(xs) / len(xs)
+    return m, math.sqrt(sum((x - m)**2 for x in xs) / (len(xs) - 1)) if len(xs) > 1 else None
+
+
+def test_mean_and_sample_std_by_hand(tmp_path):
+    data = StudyData(fabricate(tmp_path))
+    assert data.param == 'Tc' and data.values == [0, 1e-4, 0.01, 0.04] and data.seeds == [1, 2, 3]
+    assert sorted(data.missing) == sorted(rid(*m) for m in MISSING)
+    for st in data.stats():
+        mine = [r for r in RUNS if r[1] == st['value']]
+        assert st['n'] == len(mine)
+        m, s = byHand([r[2] for r in mine])
+        assert st['deltaAtPeak_mean'] == pytest.approx(m, rel=1e-12)
+        assert math.isnan(st['deltaAtPeak_std']) if s is None else st['deltaAtPeak_std'] == pytest.approx(s, rel=1e-12)
+        assert st['nCrushed_mean'] == pytest.approx(byHand([r[3] for r in mine])[0])
+        assert math.isnan(st['massLost_mean'])  # not in these summaries
+
+
+def test_csv_tables(tmp_path):
+    data = StudyData(fabricate(tmp_path / 's'))
+    runsCsv, statsCsv = writeCsv(data, str(tmp_path))
+    with open(statsCsv, newline='') as fh:
+        rows = list(csv.DictReader(fh))
+    assert [r['Tc'] for r in rows] == ['0', '0.0001', '0.01', '0.04'] and [r['n'] for r in rows] == ['3', '3', '2', '1']
+    assert float(rows[2]['deltaAtPeak_mean [m]']) == pytest.approx(0.0235, rel=1e-12)
+    assert float(rows[2]['deltaAtPeak_std [m]']) == pytest.approx(math.sqrt(2 * 0.0015**2), rel=1e-12)
+    assert rows[3]['deltaAtPeak_std [m]'] == ''  # one run: no standard deviation
+    with open(runsCsv, newline='') as fh:
+        runs = list(csv.DictReader(fh))
+    assert [r['line'] for r in runs] == [str(n) for n in range(2, 11)] and runs[0]['deltaAtPeak [m]'] == '0.05'
+
+
+def test_the_studied_parameter(tmp_path):
+    assert StudyData(fabricate(tmp_path / 'a', params=False)).values == [0, 1e-4, 0.01, 0.04]  # from the cells
+    two = fabricate(tmp_path / 'b', more={'f': lambda i: i % 2 + 1})
+    with pytest.raises(StudyError, match='--param: the table varies Tc, f; say which'):
+        StudyData(two)
+    assert StudyData(two, 'f').values == [1, 2]
+    with pytest.raises(StudyError, match=r"--param: 'gamma' is not a column .*columns: seed, Tc, f"):
+        StudyData(two, 'gamma')
+    one = fabricate(tmp_path / 'c', runs=[r for r in RUNS if r[1] == 0], missing=[])
+    with pytest.raises(StudyError, match='no column but the seed varies'):
+        StudyData(one)
+    with pytest.raises(StudyError, match='no finished run'):
+        StudyData(fabricate(tmp_path / 'd', runs=[], missing=MISSING))
+    with pytest.raises(StudyError, match=r'STUDY: .* \(no study.json\)'):
+        StudyData(str(tmp_path))
+
+
+def test_axis_of_fig5(tmp_path):
+    data = StudyData(fabricate(tmp_path / 'a'))
+    x, ticks, scale = axisPositions(data, 'auto')  # four decades with Tc = 0: log, 0 one step left
+    assert scale == 'log' and ticks[0] == 'every step' and 0 < x[0] < x[1e-4] < x[0.01] < x[0.04]
+    assert math.log(x[1e-4] / x[0]) == pytest.approx(math.log(0.04 / 1e-4) / 2)
+    assert axisPositions(data, 'no')[2] == 'linear'
+    data.numeric, data.values = False, [4, 'planar4']
+    assert axisPositions(data, 'auto') == ({4: 0, 'planar4': 1}, ['4', 'planar4'], 'linear')
+
+
+def test_report_names_missing_runs_and_code_versions(tmp_path, capsys):
+    d = fabricate(tmp_path / 's', code=('a' * 40, 'b' * 40))
+    aggregate(d, figures=False)
+    said = capsys.readouterr().out
+    assert 'studied parameter Tc (4 values), 3 realizations' in said and 'not finished (left out): 3' in said
+    assert 'made by 2 versions of the code (sha1 aaaaaaaaaa, bbbbbbbbbb' in said
+    assert os.path.exists(os.path.join(d, 'aggregate', 'stats.csv')) and not os.path.exists(os.path.join(d, 'aggregate', 'fd_curves.png'))
+    (tmp_path / 'file').write_text('')
+    with pytest.raises(StudyError, match='--out: .* not a directory'):
+        aggregate(d, outDir=str(tmp_path / 'file'), figures=False)

@@ -1,0 +1,48 @@
+"""Tests of ballast.study.files: atomic writes, and the sha1 that identifies the code of a run (the
+script and the installed ballast package)."""
+import os
+
+import ballast
+from ballast.study import files
+
+
+def test_write_atomic_replaces_whole_files_and_leaves_no_temporary(tmp_path):
+    p = str(tmp_path / 'status.csv')
+    files.writeAtomic(p, 'a\n')
+    files.writeAtomic(p, b'b\n')
+    assert open(p).read() == 'b\n' and os.listdir(str(tmp_path)) == ['status.csv']
+
+
+def test_code_sha1_changes_with_the_script_and_reads_the_package():
+    a = files.codeSha1('print(1)\n')
+    assert a == files.codeSha1('print(1)\n') and a != files.codeSha1('print(2)\n')
+    assert a == files.sha1(files.sha1('print(1)\n') + files.packageSha1())
+
+
+def test_package_sha1_covers_the_python_files_and_the_compiled_core(tmp_path, monkeypatch):
+    """A copy of the installed package hashes alike; one byte more in any .py or in _ballast*.so,
+    or another file name, changes it; other files do not count."""
+    import shutil
+    top = os.path.dirname(ballast.__file__)
+    copy = tmp_path / 'ballast'
+    shutil.copytree(top, str(copy), ignore=shutil.ignore_patterns('__pycache__'))
+    monkeypatch.setattr(ballast, '__file__', str(copy / '__init__.py'))
+    h = files.packageSha1()
+    (copy / 'notes.txt').write_text('not code')
+    assert files.packageSha1() == h
+    so = [n for n in os.listdir(str(copy)) if n.startswith('_ballast') and n.endswith('.so')]
+    assert so
+    for name in (so[0], 'params.py', os.path.join('study', 'runner.py')):
+        with open(str(copy / name), 'ab') as fh:
+            fh.write(b'\n')
+        assert files.packageSha1() != h, name
+        h = files.packageSha1()
+    os.rename(str(copy / 'scenes.py'), str(copy / 'scenes2.py'))
+    assert files.packageSha1() != h
+
+
+def test_read_files_gives_every_file_below_a_directory(tmp_path):
+    (tmp_path / 'vtk').mkdir()
+    (tmp_path / 'fd.csv').write_text('t,F\n')
+    (tmp_path / 'vtk' / 'a.vtu').write_bytes(b'\0\1')
+    assert files.readFiles(str(tmp_path)) == {'fd.csv': b't,F\n', os.path.join('vtk', 'a.vtu'): b'\0\1'}

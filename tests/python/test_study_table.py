@@ -1,0 +1,115 @@
+"""Tests of ballast.study.table against hand-written tables: rows, line numbers, '=' repeats and run
+ids as yade-batch gives them (YADE's own TableParamReader reads them), what is refused and how the
+refusal names line, column and value; yade-batch's --lines; grid."""
+import os
+import subprocess
+import sys
+
+import pytest
+
+from ballast.oedometer.parameters import PARAMS
+from ballast.study.options import StudyError
+from ballast.study.table import Table, cellValue, gridTable, gridValues
+
+
+def table(text):
+    return Table('t.table', text)
+
+
+def refused(text):
+    with pytest.raises(StudyError) as e:
+        table(text).check()
+    return str(e.value)
+
+
+def test_rows_keep_the_line_numbers_of_the_file_and_equals_repeats():
+    t = table('# a comment line\n\nseed f   # columns\n1    0.5\n\n# gap\n2    =\n3    8 # last\n')
+    assert [n for n, _ in t.rows] == [4, 7, 8]
+    assert t.rows[1][1] == {'seed': '2', 'f': '0.5'}  # '=' repeats the row above
+    assert t.columns == ['seed', 'f']
+    assert t.runId(7) == 'seed=2,f=0.5'  # no '!' columns: every column
+
+
+def test_run_ids_from_bang_columns_or_the_description():
+    t = table("seed! f! pattern\n1 2 'planar4'\n")
+    assert t.columns == ['seed', 'f', 'pattern'] and t.runId(2) == 'seed=1,f=2'
+    t = table("description seed pattern\nfirst/try 1 'planar4'\n")
+    assert t.runId(2) == 'first_try'  # made a directory name
+    assert t.rows[0][1]['pattern'] == "'planar4'"  # cells are text; quotes stay, as yade-batch passes them
+    assert table("seed pattern\n1 'planar4'\n").runId(2) == 'seed=1,pattern=planar4'  # quotes dropped, as yade-batch does
+
+
+def test_the_last_line_needs_no_newline():
+    assert table('seed f\n1 25').rows == [(2, {'seed': '1', 'f': '25'})]  # YADE's reader alone would read f=2
+
+
+@pytest.mark.parametrize('text, words', [
+    ('', ['empty']),
+    ('# only a comment\nseed f\n', ['no rows', 'line 2']),
+    ('seed f\n1 2\n3\n', ['t.table:3', '1 cells', '2 columns']),
+    ('seed f\n1 2 3\n', ['t.table:2', '3 cells']),
+    ('seed f\n= 2\n', ['t.table:2', "'='", 'seed', 'first row']),
+    ('seed f f\n1 2 3\n', ['t.table:1', 'twice']),
+    ('seed f! f\n1 2 3\n', ['twice']),
+    ('seed! f\n1 2\n1 4\n', ['t.table:3', "'seed=1'", 'line 2', 'description']),  # YADE would make it seed=1__line=3__
+    ('description seed\na 1\na 2\n', ['t.table:3', "'a'", 'line 2']),
+    ('description seed\na/b 1\na_b 2\n', ['t.table:3', "'a_b'"]),  # the same directory name
+])
+def test_tables_yade_would_misread_are_refused_naming_the_line(text, words):
+    with pytest.raises(StudyError) as e:
+        table(text)
+    for w in words:
+        assert w in str(e.value), (w, str(e.value))
+
+
+def test_every_cell_is_checked_before_any_run():
+    params = table('seed f   Tc\n1 2 0\n2 0.5 1e-4\n').check()
+    assert params[3]['f'] == 0.5 and params[3]['Tc'] == 1e-4 and params[2]['Fmax'] == PARAMS['Fmax'].default  # defaults filled in
+    msg = refused('seed f\n1 2\n2 -1\n3 x\n')
+    assert msg.startswith('2 row(s) refused')
+    assert 't.table:3: column f, value -1' in msg and 'a finite number > 0 [Hz]' in msg
+    assert 't.table:4: column f, value x' in msg
+    # a check between parameters, on one the row does not set: the row is named
+    msg = refused('seed diameter\n1 0.01\n')
+    assert 't.table:2: ' in msg and 'dMax' in msg and 'diameter=0.01' in msg
+
+
+def test_columns_that_are_not_parameters_are_named():
+    msg = refused('seed fq Tcc\n1 2 3\n')
+    assert 'fq, Tcc' in msg and 'not parameters' in msg
+    assert 'runId' in refused('seed runId\n1 a\n') and 'set by the study' in refused('seed runId\n1 a\n')
+    # the description and yade-batch's !COLUMNS are not parameters
+    assert table('description seed !OMP_NUM_THREADS\na 1 2\n').check()[2]['seed'] == 1
+
+
+def test_cell_values_as_the_oedometer_reads_them():
+    assert cellValue('f', '200') == 200 and cellValue('pattern', "'planar4'") == 'planar4'
+    assert cellValue('abrasion', '0') is False  # a flag
+    assert cellValue('notAParameter', '1e-4') == 1e-4
+
+
+def test_grid_writes_every_combination_the_first_slowest():
+    text, n = gridTable(['seed!=1:2', 'f!=0.5,8'], ['Fmax=6.7e5'], ['a study'], 'study.py grid ...')
+    assert n == 4 and text.startswith('# a study\n# written by: study.py grid ...\n')
+    t = Table('grid', text)
+    assert [r['seed'] + '/' + r['f'] for _, r in t.rows] == ['1/0.5', '1/8', '2/0.5', '2/8']
+    assert {r['Fmax'] for _, r in t.rows} == {'6.7e5'} and t.runId(4) == 'seed=1,f=0.5'
+    assert gridValues('Tc=0,1e-4') == ('Tc', ['0', '1e-4'])
+    for axes, fixed, words in [(['seed=3:1'], [], 'empty range'), (['seed=1 2'], [], 'blank'), (['seed'], [], 'NAME=V1'),
+                               (['seed=1:2'], ['f=1,2'], 'one value'), (['f=1:2', 'f!=3'], [], 'twice'),
+                               (['seed=1:2', 'f=0,1'], [], 'column f, value 0')]:
+        with pytest.raises(StudyError, match=words):
+            gridTable(axes, fixed)
+
+
+def test_reading_a_table_leaves_nothing_behind(tmp_path):
+    """YADE's reader boots YADE: its banner stays off our standard output and its /tmp/yade-XXXXXX
+    directory is removed at exit."""
+    before = set(os.listdir('/tmp'))
+    (tmp_path / 't.table').write_text('seed\n1\n')
+    p = subprocess.run([sys.executable, '-c', 'import sys; from ballast.study.table import Table; '
+                        'print(Table(sys.argv[1]).runId(2))', str(tmp_path / 't.table')],
+                       capture_output=True, text=True, timeout=60, cwd=str(tmp_path))
+    assert p.returncode == 0, p.stderr
+    assert p.stdout == 'seed=1\n'
+    assert not [d for d in set(os.listdir('/tmp')) - before if d.startswith('yade-')]
