@@ -39,12 +39,25 @@ def busyProcesses():
 	return busy
 
 
+def engineShares(path):
+	"""The top-level lines of YADE's timing.stats() (timing.txt): engine, calls, seconds, share."""
+	lines = []
+	with open(path) as fh:
+		for l in fh:
+			parts = l.rstrip().rsplit(None, 3)
+			if len(parts) == 4 and not l.startswith(' ') and parts[3].endswith('%') and parts[2].endswith('us'):
+				lines.append('  %-28s %9s calls %8.2f s %8s' % (parts[0], parts[1], float(parts[2][:-2]) / 1e6, parts[3]))
+	return 'bench: loading, per engine (yade.timing):\n' + '\n'.join(lines)
+
+
 def main():
 	ap = argparse.ArgumentParser(description=__doc__.split('\n\n')[0])
 	ap.add_argument('--runs', type=int, default=1, help='number of runs (default 1)')
 	ap.add_argument('--reuse', action='store_true', help='runs after the first reuse the packing the first one built')
 	ap.add_argument('--threads', type=int, default=1, help='yade -j (default 1, as the README command)')
 	ap.add_argument('--keep', action='store_true', help='keep the results directory')
+	ap.add_argument('--timing', action='store_true', help="time every engine while loading (the script's --timing 1) and "
+	                'print the share of each')
 	ap.add_argument('extra', nargs='*', help='further script options after --, e.g. -- --f 4')
 	a = ap.parse_args()
 	root = tempfile.mkdtemp(prefix='bench_oedometer_')
@@ -57,7 +70,7 @@ def main():
 		cmd = ['yade', '-j', str(a.threads), '-n', '-x', SCRIPT, '--results', root, '--runId', 'bench%d' % k, '--progress', '30']
 		if k > 0 and not a.reuse:
 			cmd += ['--packingDir', os.path.join(root, 'packings%d' % k)]
-		cmd += a.extra
+		cmd += a.extra + (['--timing', '1'] if a.timing else [])
 		print('bench: ' + ' '.join(cmd), flush=True)
 		t0 = time.time()
 		load0 = os.getloadavg()[0]
@@ -73,6 +86,8 @@ def main():
 			sys.exit('bench: run %d failed (exit %d)' % (k, proc.returncode))
 		with open(os.path.join(root, 'bench%d' % k, 'summary.json')) as fh:
 			s = json.load(fh)
+		if a.timing:
+			print(engineShares(os.path.join(root, 'bench%d' % k, 'timing.txt')))
 		steps = s['steps']
 		rows.append({'run': k, 'wall': wall, 'cpu': cpu, 'loadavg': [load0, os.getloadavg()[0]], 'packingReused': s['packingReused'],
 		             'phases': s['wallSecondsByPhase'], 'steps': steps, 'stepsPerSecond': steps / max(s['wallSeconds'], 1e-9),

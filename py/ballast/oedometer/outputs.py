@@ -8,7 +8,7 @@ import os
 
 import numpy as np
 from yade import O, plot
-from yade.wrapper import PyRunner, Sphere
+from yade.wrapper import Facet, PyRunner, Sphere
 
 from .. import _ballast, harvest
 from .callbacks import command
@@ -268,18 +268,25 @@ def writeGrainsVtu(path, table):
     _unstructured(path, points, np.arange(n), np.arange(1, n + 1), np.ones(n, dtype=int), data)
 
 
-def writeWallsVtu(path, facetIds, plateZ, radius):
-    """The cylinder's facets (triangles) and the plate (a square a little wider than the cylinder)."""
-    pts = []
-    for i in facetIds:
-        b = O.bodies[i]
-        pts.extend(tuple(b.state.pos + b.state.ori * v) for v in b.shape.vertices)
+def writeWallsVtu(path, steelIds, plateZ, radius):
+    """The cylinder's facets (triangles), its bottom wall and the plate (squares a little wider than the
+    cylinder, at their heights)."""
+    pts, conn, offsets, types = [], [], [], []
+
+    def cell(vertices, kind):
+        conn.extend(range(len(pts), len(pts) + len(vertices)))
+        pts.extend(vertices)
+        offsets.append(len(pts))
+        types.append(kind)
     h = 1.1 * radius
-    pts.extend([(-h, -h, plateZ), (h, -h, plateZ), (h, h, plateZ), (-h, h, plateZ)])
-    nTri = len(facetIds)
-    conn = list(range(3 * nTri)) + [3 * nTri + k for k in range(4)]
-    offsets = [3 * (k + 1) for k in range(nTri)] + [3 * nTri + 4]
-    types = [5] * nTri + [9]  # VTK_TRIANGLE, VTK_QUAD
+    for i in steelIds:
+        b = O.bodies[i]
+        if isinstance(b.shape, Facet):
+            cell([tuple(b.state.pos + b.state.ori * v) for v in b.shape.vertices], 5)  # VTK_TRIANGLE
+        else:  # the bottom wall
+            z = b.state.pos[2]
+            cell([(-h, -h, z), (h, -h, z), (h, h, z), (-h, h, z)], 9)  # VTK_QUAD
+    cell([(-h, -h, plateZ), (h, -h, plateZ), (h, h, plateZ), (-h, h, plateZ)], 9)
     _unstructured(path, np.array(pts), conn, offsets, types)
 
 

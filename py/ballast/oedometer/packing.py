@@ -1,14 +1,17 @@
-"""The sample (section 4): grains with diameters uniform in [dMin, dMax] deposited under gravity into
-the cylinder, vibrated, stiffened to the true modulus, and stored per seed and packing parameters so
-that every later run of the same realization starts from the same grains."""
+"""The sample (section 4): a dense packing of grains with diameters uniform in [dMin, dMax] in the
+cylinder, stored per seed and packing parameters so that every later run of the same realization
+starts from the same grains. The grains (YADE's SpherePack.makeCloud) fall frictionless into the
+cylinder, a plate presses them until they rest, friction is restored, the plate's force lowered and
+the grains stiffened to the true modulus; the plate is then lifted. docs/oedometer.md, "The sample",
+gives the porosities this reaches and why."""
 import json
 import math
 import os
 import time
 
 import numpy as np
-from yade import O, Vector3, utils
-from yade.wrapper import PyRunner
+from yade import O, Vector3, pack, utils
+from yade.wrapper import PyRunner, Sphere
 
 from ..geometry import meanCubedDiameterVolume, sphereVolume
 from . import scene
@@ -24,11 +27,13 @@ class StoredPacking:
     STIFFEN_TIME = 0.01     # [s] simulated time over which the soft preparation modulus is raised to young
     PREP_DT_SAFETY = 0.5    # [-] O.dt / PWaveTimeStep() while preparing: the packing does not depend on dtSafety
     CLOUD_SOLID = 0.3       # [-] solid fraction of the falling cloud, low enough for grains to fall freely
-    OVERFILL_SOLID = 0.64   # [-] enough grains to overfill the cylinder at this solid fraction; the excess is cut
+    PRESS_STILL = (0.03, 1e-5)   # ([s], [m]): the press ends when the plate moved less than this over that time
+    SEAT_STILL = (0.01, 2e-6)    # the same once friction is restored and the force lowered
+    PRESS_TIME = (0.05, 1.0)     # [s] shortest and longest press
 
     def __init__(self):
         self.file, self.reused, self.escaped = None, False, None
-        self._shake = self._stiffen = None
+        self._shake = self._stiffen = self._plate = None
 
     def state(self):
         return {'file': self.file, 'reused': self.reused, 'escaped': self.escaped}
@@ -72,60 +77,112 @@ class StoredPacking:
         exp.phases.run('settle', lambda: exp.unbalanced() < 0.01, tEnd=O.time + 0.01, checkEvery=100)
 
     # ------------------------------------------------------------------ building
-    def cloud(self, p, rng, n, Rin):
-        """n grains, diameters uniform in [dMin, dMax], at random non-overlapping places in the
-        cylinder at solid fraction CLOUD_SOLID. Returns (centres, radii, cloud height)."""
-        d = rng.uniform(p['dMin'], p['dMax'], n)
-        r = np.sort(d / 2)[::-1]  # big first: random sequential addition fails less
+    def cloud(self, p, seed, vSolid, Rin):
+        """Grains of total volume vSolid [m^3] in a loose cloud (solid fraction CLOUD_SOLID) above the bottom,
+        placed by YADE's SpherePack.makeCloud (radii uniform in [dMin/2, dMax/2], no overlaps) in the box
+        around the cylinder; those with their centre farther than Rin - dMax/2 - gap from the axis are
+        dropped, then the lowest kept until vSolid is reached. Returns (centres, radii, cloud top)."""
+        rMin, rMax = p['dMin'] / 2, p['dMax'] / 2
         gap = 0.05 * p['dMin']
-        hCloud = np.sum(sphereVolume(r)) / (self.CLOUD_SOLID * math.pi * Rin ** 2)
-        pos = np.zeros((n, 3))
-        for i, ri in enumerate(r):
-            for trial in range(100000):
-                if trial and trial % 300 == 0:
-                    hCloud *= 1.1
-                rho = (Rin - ri - gap) * math.sqrt(rng.uniform())
-                phi = rng.uniform(0, 2 * math.pi)
-                c = np.array([rho * math.cos(phi), rho * math.sin(phi), rng.uniform(ri + gap, max(hCloud - ri, ri + gap))])
-                if i == 0 or np.all(np.sum((pos[:i] - c) ** 2, axis=1) > (r[:i] + ri + gap) ** 2):
-                    pos[i] = c
-                    break
-            else:
-                raise RuntimeError('could not place grain %d of %d in the cloud' % (i, n))
-        return pos, r, hCloud
+        Rc = Rin - rMax - gap
+        z0 = rMax + gap
+        hBox = 1.25 * vSolid / (self.CLOUD_SOLID * math.pi * Rc ** 2)  # the square box loses 1 - pi/4 of its grains
+        num = int(math.ceil(1.25 * vSolid / meanCubedDiameterVolume(p['dMin'], p['dMax']) * 4 / math.pi))
+        for attempt in range(6):  # a narrow box holds big grains at a lower solid fraction: make it taller
+            sp = pack.SpherePack()
+            made = sp.makeCloud((-Rc, -Rc, z0), (Rc, Rc, z0 + hBox), rMean=(rMin + rMax) / 2,
+                                rRelFuzz=(rMax - rMin) / (rMax + rMin), num=num, seed=seed)
+            if made == num:
+                break
+            hBox *= 1.3
+        else:
+            raise RuntimeError('cloud: makeCloud placed %d of %d grains' % (made, num))
+        kept = sorted(((c[2], c[0], c[1], r) for c, r in sp if math.hypot(c[0], c[1]) < Rc))
+        z, x, y, r = (np.array(v) for v in zip(*kept))
+        n = int(np.searchsorted(np.cumsum(sphereVolume(r)), vSolid)) + 1
+        if n > len(r):
+            raise RuntimeError('cloud: %.3g m^3 of grains asked, %.3g placed' % (vSolid, np.sum(sphereVolume(r))))
+        return np.column_stack([x[:n], y[:n], z[:n]]), r[:n], float(np.max(z[:n] + r[:n]))
 
     def build(self, exp):
         p = exp.p
         exp.newScene()
         exp.ballast, exp.steel = scene.materials(p, p['prepYoung'])
-        rng = np.random.default_rng(p['seed'])
+        exp.ballast.frictionAngle = p['depFriction']
         Rin = p['diameter'] / 2
-        n = int(math.ceil(self.OVERFILL_SOLID * math.pi * Rin ** 2 * p['height'] / meanCubedDiameterVolume(p['dMin'], p['dMax'])))
-        pos, rad, hCloud = self.cloud(p, rng, n, Rin)
+        pos, rad, top = self.cloud(p, p['seed'], p['fill'] * math.pi * Rin ** 2 * p['height'], Rin)
         # while the cloud falls the wall reaches above it, or grains bounce out over the rim
-        exp.cylinder = scene.Cylinder(p, exp.steel, max(p['height'], hCloud + p['dMax']))
+        exp.cylinder = scene.Cylinder(p, exp.steel, max(p['height'], top + p['dMax']))
         O.engines = scene.engines(p['prepDamping'], p['law']) + [
             PyRunner(command=command('packing', 'shake'), iterPeriod=10, dead=True, label='oedoShaker')]
         for c, r in zip(pos, rad):
             O.bodies.append(utils.sphere(tuple(c), float(r), material=exp.ballast, mask=scene.GRAIN_MASK))
         O.dt = self.PREP_DT_SAFETY * utils.PWaveTimeStep()
-        exp.phases.say('deposit: %d grains falling from up to %.3f m (E = %.3g Pa while preparing, dt = %.2e s)' % (
-            n, hCloud, p['prepYoung'], O.dt))
-        tFall = math.sqrt(2 * hCloud / 9.81)
-        # at rest: forces balanced (grains on the frictionless steel may still slide, so not v = 0)
-        exp.phases.run('deposit', lambda: O.time > 1.2 * tFall and exp.unbalanced() < 0.1, tEnd=p['depTime'],
-                       simSpan=p['depTime'], simStart=0.0, extra=exp.restInfo)
-        # fill to the cylinder height: grains sticking out above it are removed
-        grains = exp.sphereBodies()
-        cut = [b.id for b in grains if b.state.pos[2] + b.shape.radius > p['height']]
-        out = [b.id for b in grains if math.hypot(b.state.pos[0], b.state.pos[1]) > exp.cylinder.Rv or b.state.pos[2] < 0]
-        for i in set(cut + out):
+        exp.phases.say('deposit: %d grains (%.1f %% of the cylinder) falling from up to %.3f m, friction %g rad '
+                       '(E = %.3g Pa while preparing, dt = %.2e s)' % (len(rad), 100 * p['fill'], top,
+                                                                      p['depFriction'], p['prepYoung'], O.dt))
+        tDep = p['depTime'] or math.sqrt(2 * top / 9.81)
+        exp.phases.run('deposit', tEnd=O.time + tDep, simSpan=tDep, simStart=O.time, extra=exp.restInfo)
+        out = [b.id for b in exp.sphereBodies() if math.hypot(b.state.pos[0], b.state.pos[1]) > exp.cylinder.Rv
+               or b.state.pos[2] < 0]
+        for i in out:
             O.bodies.erase(i)
-        self.escaped = len(set(out) - set(cut))
-        exp.phases.say('deposit: done at t=%.3f s, %d grains above %.3f m removed (%d escaped), %d left' % (
-            O.time, len(cut), p['height'], self.escaped, len(exp.sphereBodies())))
+        self.escaped = len(out)
         self.vibrate(exp)
+        self.press(exp)
         self.stiffen(exp)
+        if self._plate is not None:
+            O.bodies.erase(self._plate)
+            self._plate = None
+
+    def press(self, exp):
+        """A plate of the loading plate's mass pressed with pressForce onto the frictionless grains until they
+        rest; then friction restored (materials and contacts) and the force lowered to seatForce."""
+        p = exp.p
+        self._plate = None
+        if p['pressForce'] <= 0:
+            self.restoreFriction(exp)
+            return
+        x, r, _ = exp.grainArrays()
+        b = utils.wall(float(np.max(x[:, 2] + r)), axis=2, sense=-1, material=exp.steel, mask=scene.STEEL_MASK)
+        b.state.blockedDOFs = 'xyXYZ'
+        b.state.mass = p['steelDensity'] * math.pi * (p['diameter'] / 2) ** 2 * p['plateThickness']
+        b.state.inertia = Vector3(1, 1, 1)  # a wall has none; its rotations are blocked, but Newton divides by it
+        b.dynamic = True
+        self._plate = O.bodies.append(b)
+        O.forces.setPermF(self._plate, Vector3(0, 0, -p['pressForce']))
+        tShort, tLong = self.PRESS_TIME
+        t0 = O.time
+        exp.phases.run('press', self._still(exp, *self.PRESS_STILL, after=t0 + tShort), tEnd=t0 + tLong,
+                       extra=lambda: 'plate at %.4f m  %s' % (O.bodies[self._plate].state.pos[2], exp.restInfo()))
+        self.restoreFriction(exp)
+        O.forces.setPermF(self._plate, Vector3(0, 0, -p['seatForce']))
+        t0 = O.time
+        exp.phases.run('press', self._still(exp, *self.SEAT_STILL, after=t0 + self.SEAT_STILL[0]), tEnd=t0 + 0.2)
+        exp.phases.say('press: %g N then %g N, plate at %.4f m' % (p['pressForce'], p['seatForce'],
+                                                                    O.bodies[self._plate].state.pos[2]))
+
+    def _still(self, exp, span, tol, after):
+        """A phase's end test: forces balanced and the plate moved less than tol [m] over span [s], after `after`."""
+        hist = []
+
+        def done():
+            hist.append((O.time, O.bodies[self._plate].state.pos[2]))
+            old = [z for t, z in hist if t <= O.time - span]
+            return O.time >= after and bool(old) and abs(hist[-1][1] - old[-1]) < tol and exp.unbalanced() < 0.01
+        return done
+
+    def restoreFriction(self, exp):
+        """The grains' friction angle back to `friction`, in the material and in the existing contacts (grain-steel
+        contacts take the smaller of the two, as YADE's FrictPhys does)."""
+        p = exp.p
+        exp.ballast.frictionAngle = p['friction']
+        grain = math.tan(p['friction'])
+        steel = math.tan(min(p['friction'], p['steelFriction']))
+        for i in O.interactions:
+            if i.isReal:
+                both = isinstance(O.bodies[i.id1].shape, Sphere) and isinstance(O.bodies[i.id2].shape, Sphere)
+                i.phys.tangensOfFrictionAngle = grain if both else steel
 
     def vibrate(self, exp):
         """Horizontal acceleration a cos(w tau) of the cylinder: velocity (a/w) sin(w tau), displacement

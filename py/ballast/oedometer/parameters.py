@@ -41,13 +41,24 @@ PARAMS = {
     # preparation: deposition and vibration
     'prepYoung': Param(3e8, 'Pa', "ballast Young's modulus while depositing and vibrating (time scaling; steel keeps "
                        "steelYoungRatio); restored to young before loading", positive, NUMBER_POSITIVE),
-    'prepDamping': Param(0.4, '-', 'local damping while depositing and vibrating', between(0, 1), 'a number in [0, 1)'),
-    'depTime': Param(1.5, 's', 'longest deposition; it stops earlier once the grains rest', positive, NUMBER_POSITIVE),
-    'vibAcc': Param(50., 'm/s^2', 'amplitude of the horizontal acceleration of the cylinder', nonNegative,
-                    NUMBER_NONNEGATIVE),
+    'prepDamping': Param(0.4, '-', 'local damping while preparing', between(0, 1), 'a number in [0, 1)'),
+    'fill': Param(0.562, '-', 'solid volume of the grains over the volume of the cylinder (pi diameter^2 height / 4): '
+                  'the dense sample fills the cylinder to about its height at 0.562', between(0.1, 0.74),
+                  'a number in [0.1, 0.74)'),
+    'depFriction': Param(0.0, 'rad', 'grain friction angle while depositing and pressing (frictionless grains pack '
+                         'densely); friction is restored to `friction` before the plate is lifted', between(0, math.pi / 2),
+                         _PHI),
+    'depTime': Param(0.0, 's', 'deposition time before the press (0: the free-fall time of the cloud\'s top)',
+                     nonNegative, NUMBER_NONNEGATIVE),
+    'pressForce': Param(8000.0, 'N', 'force pressing the frictionless grains through a plate (besides its weight) until '
+                        'they rest (0: no press)', nonNegative, NUMBER_NONNEGATIVE),
+    'seatForce': Param(100.0, 'N', 'force on the press plate (besides its weight) once friction is restored, before it '
+                       'is lifted', nonNegative, NUMBER_NONNEGATIVE),
+    'vibAcc': Param(50., 'm/s^2', 'amplitude of the horizontal acceleration of the cylinder after the deposition',
+                    nonNegative, NUMBER_NONNEGATIVE),
     'vibFreq': Param(20., 'Hz', 'frequency of the vibration', positive, NUMBER_POSITIVE),
-    'vibTime': Param(0.2, 's', 'duration of the vibration (rounded up to whole periods; 0 = none)', nonNegative,
-                     NUMBER_NONNEGATIVE),
+    'vibTime': Param(0.0, 's', 'duration of the vibration (rounded up to whole periods; 0 = none: the press packs '
+                     'densely enough)', nonNegative, NUMBER_NONNEGATIVE),
     'reusePacking': Param(True, '-', 'load the stored packing of this seed and packing parameters if there is one',
                           boolean, '0 or 1', flag),
     'packingDir': Param('', 'path', 'where packings are stored (default <results>/packings)', anyText, 'a path', text),
@@ -99,9 +110,10 @@ PARAMS = {
 # What decides a packing: these parameters and the version of the preparation. Bump the version
 # whenever the preparation changes: stored packings of older versions are then not reused.
 PACKING_KEYS = ('seed', 'diameter', 'height', 'dMin', 'dMax', 'segments', 'young', 'poisson', 'friction', 'density',
-                'steelYoungRatio', 'steelPoisson', 'steelFriction', 'steelDensity', 'prepYoung', 'prepDamping',
-                'depTime', 'vibAcc', 'vibFreq', 'vibTime', 'law')
-PACKING_VERSION = 3
+                'steelYoungRatio', 'steelPoisson', 'steelFriction', 'steelDensity', 'prepYoung', 'prepDamping', 'fill',
+                'depFriction', 'depTime', 'pressForce', 'seatForce', 'plateThickness', 'vibAcc', 'vibFreq', 'vibTime',
+                'law')
+PACKING_VERSION = 4
 
 
 def crossCheck(p):
