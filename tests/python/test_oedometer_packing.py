@@ -50,3 +50,17 @@ def test_store_builds_once_then_reuses(tmp_path):
     x2, r2, _ = second.grainArrays()
     np.testing.assert_array_equal(r2, r)  # the same grains; positions after the same settling
     np.testing.assert_array_equal(x2, x)
+
+
+def test_paper_size_sample_is_dense(tmp_path):
+    """Section 4's sample (300 x 150 mm cylinder, grains uniform in [20.5, 44.5] mm), seed 1: porosity under
+    the plate seated on the highest grain at most 0.46 (issue 11; the loose deposition gave 0.524), the
+    cylinder filled to about its height, grain sizes as asked."""
+    run = Oedometer(results=str(tmp_path / 'r'), packingDir=str(tmp_path / 'packings'), progress=60).prepare()
+    x, r, _ = run.grainArrays()
+    top = float(np.max(x[:, 2] + r))
+    porosity = 1 - np.sum(4 / 3 * math.pi * r ** 3) / (math.pi * 0.15 ** 2 * top)
+    assert porosity <= 0.46
+    assert abs(top - 0.15) <= 0.0445 / 2  # within half a grain of the cylinder's height
+    assert 0.0205 / 2 * (1 - 1e-9) <= r.min() and r.max() <= 0.0445 / 2 * (1 + 1e-9)
+    assert np.all(np.hypot(x[:, 0], x[:, 1]) + r <= run.cylinder.Rv + 1e-3) and np.all(x[:, 2] - r >= -1e-3)

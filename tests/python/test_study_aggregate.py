@@ -113,3 +113,23 @@ def test_report_names_missing_runs_and_code_versions(tmp_path, capsys):
     (tmp_path / 'file').write_text('')
     with pytest.raises(StudyError, match='--out: .* not a directory'):
         aggregate(d, outDir=str(tmp_path / 'file'), figures=False)
+
+
+def test_peak_is_the_applied_peak_when_every_run_has_it(tmp_path):
+    """Runs of the plate load record delta at the peak of the applied force (t = T/2): Fig. 5 uses it; a
+    study with a run that lacks it falls back to delta at the peak of the measured force."""
+    d = fabricate(tmp_path / 'a')
+    assert StudyData(d).peak == 'deltaAtPeak'
+    applied = {}
+    for r in RUNS:
+        path = os.path.join(d, 'runs', rid(r[0], r[1]), 'summary.json')
+        with open(path) as fh:
+            s = json.load(fh)
+        s['deltaAtAppliedPeak'] = applied[r[:2]] = 0.5 * r[2] + 0.001 * r[0]
+        with open(path, 'w') as fh:
+            json.dump(s, fh)
+    data = StudyData(d)
+    assert data.peak == 'deltaAtAppliedPeak'
+    for st in data.stats():
+        m, _ = byHand([v for k, v in applied.items() if k[1] == st['value']])
+        assert st['deltaAtAppliedPeak_mean'] == pytest.approx(m, rel=1e-12)

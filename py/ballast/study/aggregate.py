@@ -20,10 +20,11 @@ from .options import StudyError
 from .table import cellValue
 
 # Results of summary.json carried into the tables; (key, unit)
-RESULTS = [('peakForce', 'N'), ('deltaAtPeak', 'm'), ('deltaMax', 'm'), ('deltaFinal', 'm'), ('nCrushed', '-'),
+RESULTS = [('peakForce', 'N'), ('deltaAtPeak', 'm'), ('deltaAtAppliedPeak', 'm'), ('seatingDelta', 'm'), ('deltaMax', 'm'),
+           ('deltaFinal', 'm'), ('nCrushed', '-'),
            ('nAbraded', '-'), ('volumeLost', 'm^3'), ('massLost', 'kg'), ('massInitial', 'kg'), ('nGrainsInitial', '-'),
            ('porosity0', '-'), ('wallSeconds', 's'), ('cpuSeconds', 's'), ('steps', '-')]
-STATS = ['deltaAtPeak', 'deltaMax', 'peakForce', 'nCrushed', 'nAbraded', 'massLost', 'wallSeconds']
+STATS = ['deltaAtPeak', 'deltaAtAppliedPeak', 'deltaMax', 'peakForce', 'nCrushed', 'nAbraded', 'massLost', 'wallSeconds']
 LABELS = {'f': 'loading frequency f [Hz]', 'Tc': 'crushing period $T_c$ [s]', 'rMin': '$r_{min}$ [m]', 'ft0': '$f_{t0}$ [Pa m]',
           'gamma': r'reduction factor $\gamma$ [-]', 'pattern': 'replacement pattern'}
 
@@ -91,6 +92,10 @@ class StudyData:
         self.numeric = all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in vals)
         self.values = sorted(set(vals), key=(lambda v: v) if self.numeric else (lambda v: (isinstance(v, str), str(v).zfill(8))))
         self.seeds = sorted(set(r['seed'] for r in self.runs), key=lambda s: (str(type(s)), s))
+        # the paper's "displacement at peak force": at the peak of the applied force (t = T/2) where every run
+        # records it; runs of older versions only have delta at the peak of the measured force
+        self.peak = 'deltaAtAppliedPeak' if all(r['summary'].get('deltaAtAppliedPeak') is not None
+                                               for r in self.runs) else 'deltaAtPeak'
 
     def stats(self):
         """[{value, n, <result>_mean, <result>_std}] per value of the parameter, for the STATS results."""
@@ -184,10 +189,10 @@ def plots(data, outDir, xlog='auto'):
     fig, ax = plt.subplots(figsize=(8, 5))
     for s in data.seeds:
         rs = sorted([r for r in data.runs if r['seed'] == s], key=lambda r: data.values.index(r['value']))
-        ax.plot([x[r['value']] for r in rs], [r['summary']['deltaAtPeak'] * 1e3 for r in rs], '-', color='0.7', lw=0.8, zorder=1)
+        ax.plot([x[r['value']] for r in rs], [r['summary'][data.peak] * 1e3 for r in rs], '-', color='0.7', lw=0.8, zorder=1)
     st = data.stats()
-    ax.errorbar([x[s['value']] for s in st], [s['deltaAtPeak_mean'] * 1e3 for s in st],
-                yerr=[0 if math.isnan(s['deltaAtPeak_std']) else s['deltaAtPeak_std'] * 1e3 for s in st],
+    ax.errorbar([x[s['value']] for s in st], [s[data.peak + '_mean'] * 1e3 for s in st],
+                yerr=[0 if math.isnan(s[data.peak + '_std']) else s[data.peak + '_std'] * 1e3 for s in st],
                 fmt='o', color='C0', ecolor='C0', capsize=4, lw=1.5, zorder=3, label='mean $\\pm$ standard deviation')
     ax.plot([], [], '-', color='0.7', label='one realization (seed)')
     ax.set_xscale(scale)
@@ -196,7 +201,8 @@ def plots(data, outDir, xlog='auto'):
         ax.set_xticklabels(ticks, rotation=45 if scale == 'log' else 0, ha='right' if scale == 'log' else 'center', fontsize=8)
         ax.minorticks_off()
     ax.legend(fontsize=8)
-    dp = save(fig, ax, LABELS.get(data.param, data.param), r'displacement at peak force $\delta$ [mm]',
+    dp = save(fig, ax, LABELS.get(data.param, data.param), r'displacement at peak %sforce $\delta$ [mm]' % (
+              'applied ' if data.peak == 'deltaAtAppliedPeak' else ''),
               '%s: %d runs, %d realizations' % (name, len(data.runs), len(data.seeds)), os.path.join(outDir, 'delta_peak.png'))
     return fd, dp
 
@@ -235,7 +241,7 @@ def aggregate(path, param=None, outDir=None, xlog='auto', figures=True):
     print('%-12s %3s  %22s  %22s  %16s' % (data.param, 'n', 'delta at peak [mm]', 'delta max [mm]', 'crushed'))
     for st in data.stats():
         print('%-12s %3d  %10.2f +- %8.2f  %10.2f +- %8.2f  %6.1f +- %5.1f' % (
-            label(st['value']), st['n'], st['deltaAtPeak_mean'] * 1e3, st['deltaAtPeak_std'] * 1e3, st['deltaMax_mean'] * 1e3,
+            label(st['value']), st['n'], st[data.peak + '_mean'] * 1e3, st[data.peak + '_std'] * 1e3, st['deltaMax_mean'] * 1e3,
             st['deltaMax_std'] * 1e3, st['nCrushed_mean'], st['nCrushed_std']))
     print('tables: %s, %s' % (runsCsv, statsCsv))
     if figures:
