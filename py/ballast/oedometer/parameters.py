@@ -80,7 +80,7 @@ PARAMS = {
                       between(1e-9, 1, closedHi=True), 'a number in (0, 1]'),
     # crushing (section 2) and abrasion (section 3): the engines' declarations
     'crush': Param(True, '-', 'BallastCrushEngine on', boolean, '0 or 1', flag),
-    'ft0': CRUSH['ft0'].withDefault(2.5e6),
+    'ft0': CRUSH['ft0'].withDefault(3.1e6),  # calibrated: docs/oedometer.md, "Choice of the defaults"
     'm': CRUSH['m'],
     'pattern': CRUSH['pattern'],
     'rMin': CRUSH['rMin'].withDefault(0.010),

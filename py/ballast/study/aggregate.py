@@ -174,7 +174,9 @@ def plots(data, outDir, xlog='auto'):
             a = np.loadtxt(os.path.join(r['dir'], 'fd.csv'), delimiter=',', skiprows=1, ndmin=2)
         except (OSError, ValueError):
             continue
-        ax.plot(a[:, 2] * 1e3, a[:, 1] / 1e3, linestyle=style[r['seed']], color=color[r['value']], lw=0.9)
+        # the paper's F is the load applied (column 6 of the plate load's fd.csv); else the grains' force
+        F = a[:, 5] if a.shape[1] > 5 and np.isfinite(a[:, 5]).all() else a[:, 1]
+        ax.plot(a[:, 2] * 1e3, F / 1e3, linestyle=style[r['seed']], color=color[r['value']], lw=0.9)
     leg = ax.legend(handles=[Line2D([], [], color=color[v], lw=2, label='%s = %s' % (data.param, label(v))) for v in data.values],
                     fontsize=8, loc='upper left')
     if len(data.seeds) <= 10:
