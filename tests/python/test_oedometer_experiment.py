@@ -303,3 +303,30 @@ def test_state_saved_mid_cycle_continues_in_a_fresh_process(weak, root, tmp_path
     np.testing.assert_allclose(fd2[:, 1], fd[:, 1], rtol=0, atol=TOL_RESUME * FMAX)
     np.testing.assert_allclose(fd2[:, 2], fd[:, 2], rtol=0, atol=TOL_RESUME * s['deltaMax'])
     np.testing.assert_array_equal(fd2[:, 3:], fd[:, 3:])
+
+
+# ------------------------------------------------------------------------------------ grading
+def psd(out):
+    return np.loadtxt(os.path.join(out, 'psd.csv'), delimiter=',', skiprows=1, ndmin=2)
+
+
+def test_grading_unchanged_without_degradation(strong):
+    run, s = strong[:2]
+    a = psd(run.out)
+    np.testing.assert_allclose(a[:, 1], a[:, 2], rtol=1e-12)
+    assert s['Bg'] == 0.0 and s['Br'] == pytest.approx(0.0, abs=1e-12)
+    assert os.path.getsize(os.path.join(run.out, 'grading.png')) > 0
+
+
+def test_grading_after_crushing_counts_the_lost_mass_as_fines(weak):
+    """The lost mass is dust passing the finest sieve (0.063 mm, no fragment is that small): its
+    percentage there is 100 massLost / massInitial; the indices are those of psd.csv's two curves."""
+    from ballast import grading
+    run, s = weak[:2]
+    a = psd(run.out)
+    assert s['lostAsFines'] is True
+    assert a[0, 2] == pytest.approx(100 * s['massLost'] / s['massInitial'], rel=1e-5)
+    assert a[0, 1] == 0.0 and a[-1, 1] == a[-1, 2] == pytest.approx(100.0)
+    assert s['Bg'] == pytest.approx(grading.marsal(a[:, 1], a[:, 2]), rel=1e-5) and s['Bg'] > 0
+    assert 0 < s['Br'] < 1
+    assert s['Br'] == pytest.approx(grading.hardin(a[:, 1], a[:, 2]), rel=1e-5)

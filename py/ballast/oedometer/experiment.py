@@ -29,6 +29,7 @@ from yade import O, utils
 from yade.wrapper import PyRunner, Sphere
 
 from .. import engines as ballastEngines
+from .. import grading
 from ..engines import BallastAbrasionEngine, BallastCrushEngine
 from ..geometry import sphereVolume
 from ..names import runDirName
@@ -160,7 +161,7 @@ class Oedometer:
         self.addEngines()
         x, r, m = self.grainArrays()
         self.initial = {'massInitial': float(np.sum(m)), 'nGrainsInitial': len(r),
-                        'volumeGrains': float(np.sum(sphereVolume(r)))}
+                        'volumeGrains': float(np.sum(sphereVolume(r))), 'radii': r.tolist(), 'masses': m.tolist()}
         self.outputs.start(self)
         if p['saveEvery'] > 0:  # first in the chain: a state saved before the step begins resumes exactly
             O.engines = [PyRunner(command=command('experiment', 'checkpoint'), virtPeriod=p['saveEvery'],
@@ -272,6 +273,7 @@ class Oedometer:
         steps = self.phases.steps
         half = min(0.5 * self.T, a[-1, 0])  # eq. 8 peaks at T/2
         F5 = np.where(np.isfinite(a[:, 5]), a[:, 5], a[:, 1]) >= 0.05 * p['Fmax']
+        before, after = self.grading()
         s = {
             'runId': self.runId,
             'peakForce': float(a[k, 1]),
@@ -295,6 +297,9 @@ class Oedometer:
             'nGrainsInitial': self.initial['nGrainsInitial'],
             'nSpheresFinal': len(r),
             'maxGeneration': int(np.max(self.outputs.grains.generation, initial=0)),
+            'Bg': grading.marsal(before, after),
+            'Br': grading.hardin(before, after),
+            'lostAsFines': p['lostAsFines'],
             'plateHeight0': self.loading.z0,
             'porosity0': self.porosity0(),
             'cycles': float(a[-1, 0] / self.T),
@@ -313,6 +318,14 @@ class Oedometer:
             'params': dict(p),
         }
         return s
+
+    def grading(self):
+        """Percentage passing each sieve of grading.SIEVES_MM by mass at the start of loading and now; the
+        mass the engines lost counts as fines passing every sieve if lostAsFines."""
+        r, m = self.grainArrays()[1:]
+        fines = sum(e.massLost for e in self.degradingEngines()) if self.p['lostAsFines'] else 0.0
+        return (grading.passing(2 * np.array(self.initial['radii']), self.initial['masses']),
+                grading.passing(2 * r, m, fines=fines))
 
     def _writeTiming(self):
         import contextlib

@@ -10,7 +10,7 @@ import numpy as np
 from yade import O, plot
 from yade.wrapper import Facet, PyRunner, Sphere
 
-from .. import _ballast, harvest
+from .. import _ballast, grading, harvest
 from .callbacks import command
 
 FD_COLUMNS = ('t', 'F', 'delta', 'nCrushed', 'nAbraded', 'Fapplied')
@@ -206,6 +206,31 @@ class Outputs:
         with open(os.path.join(out, 'summary.json'), 'w') as fh:
             json.dump(summary, fh, indent=1)
         self.plot(exp, events)
+        self.writeGrading(exp, summary)
+
+    def writeGrading(self, exp, summary):
+        """psd.csv (sieve [mm], % passing before and after loading) and grading.png."""
+        before, after = exp.grading()
+        with open(os.path.join(exp.out, 'psd.csv'), 'w') as fh:
+            fh.write('sieve_mm,passing_before,passing_after\n')
+            for a, b, c in zip(grading.SIEVES_MM, before, after):
+                fh.write('%g,%.6g,%.6g\n' % (a, b, c))
+        import matplotlib
+        matplotlib.use('Agg')
+        import matplotlib.pyplot as plt
+        fig, ax = plt.subplots(figsize=(7, 4.5))
+        ax.semilogx(grading.SIEVES_MM, before, 'o-', label='before loading')
+        ax.semilogx(grading.SIEVES_MM, after, 's-', label='after loading%s' % (
+            ' (lost volume as fines)' if summary['lostAsFines'] else ''))
+        ax.set_xlabel('sieve size [mm]')
+        ax.set_ylabel('passing by mass [%]')
+        ax.set_ylim(0, 100)
+        ax.set_title('grading %s: $B_g$ = %.1f %%, $B_r$ = %.3f' % (exp.runId, summary['Bg'], summary['Br']), fontsize=9)
+        ax.grid(alpha=0.3, which='both')
+        ax.legend(fontsize=8)
+        fig.tight_layout()
+        fig.savefig(os.path.join(exp.out, 'grading.png'), dpi=120)
+        plt.close(fig)
 
     def plot(self, exp, events):
         import matplotlib

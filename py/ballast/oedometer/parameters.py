@@ -93,7 +93,10 @@ PARAMS = {
     'gamma': ABRASION['gamma'],
     'abrasionPeriod': Param(100, 'steps', 'the abrasion condition is checked every abrasionPeriod steps', positiveInt,
                             'an integer >= 1'),
-    # output
+    # outputs
+    'lostAsFines': Param(True, '-', 'count the mass a replacement or an abrasion loses as fines passing every sieve in '
+                         'psd.csv and the breakage indices (as a sieve analysis sees the dust); 0: only the spheres',
+                         boolean, '0 or 1', flag),
     'results': Param('results', 'path', 'results root; this run writes <results>/<run id>/', anyText, 'a path', text),
     'runId': Param('', '-', "run id (default O.tags['d.id']); an existing directory gets a suffix, never overwritten",
                    anyText, 'a name', text),

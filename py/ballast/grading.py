@@ -1,0 +1,64 @@
+"""Grading of ballast and breakage indices (issue 12): the percentage passing each sieve by mass, and
+Marsal's and Hardin's breakage indices between two gradings. Plain NumPy: no YADE.
+
+A sphere of diameter d passes a square-mesh sieve of aperture a when d <= a. Sieves (SIEVES_MM): the
+railway ballast sieves of EN 13450 (22.4, 31.5, 40, 50, 63, 80 mm; 0.5 mm for fine particles and
+0.063 mm for fines) and the ISO 565 R20 sizes between them down to the smallest fragment (1, 2, 4, 8,
+11.2, 16 mm). Mass lost by a replacement (the volume the fragments do not fill) can be counted as
+fines that pass the finest sieve, as a sieve analysis of a real sample would see the dust.
+docs/grading.md gives the definitions and references.
+"""
+import numpy as np
+
+SIEVES_MM = (0.063, 0.5, 1.0, 2.0, 4.0, 8.0, 11.2, 16.0, 22.4, 31.5, 40.0, 50.0, 63.0, 80.0)
+HARDIN_D0_MM = 0.074  # [mm] Hardin's lower limit of breakage potential (the No. 200 sieve)
+
+
+def passing(diameters, masses, sieves=SIEVES_MM, fines=0.0):
+    """Percentage passing each sieve by mass [%]: diameters [m] and masses [kg] of the grains, sieve
+    apertures [mm], fines [kg] of dust counted as passing every sieve."""
+    d = np.asarray(diameters, dtype=float) * 1e3
+    m = np.asarray(masses, dtype=float)
+    total = float(np.sum(m)) + fines
+    if total <= 0:
+        raise ValueError('passing: no mass to grade (total %r kg)' % total)
+    return np.array([100.0 * (float(np.sum(m[d <= a])) + fines) / total for a in sieves])
+
+
+def retained(P):
+    """Percentage by mass in each sieve interval, from the pan (below the finest sieve) to above the
+    coarsest: len(P) + 1 values summing to 100."""
+    P = np.asarray(P, dtype=float)
+    return np.diff(np.concatenate([[0.0], P, [100.0]]))
+
+
+def marsal(before, after):
+    """Marsal's breakage index B_g [%] (Marsal 1967): the sum of the positive decreases of the
+    percentage retained in each sieve interval, from before to after (percentages passing, one sieve
+    series)."""
+    return float(np.sum(np.maximum(retained(before) - retained(after), 0.0)))
+
+
+def breakagePotential(P, sieves=SIEVES_MM, d0=HARDIN_D0_MM):
+    """Hardin's breakage potential B_p (Hardin 1985): the integral over the mass of log10(D / d0) for
+    grains above d0, i.e. the area between 100 % passing and the grading curve (fraction passing
+    against log10 of the size, linear between sieves) from d0 to the first sieve that passes
+    everything."""
+    x = np.log10(np.asarray(sieves, dtype=float))
+    f = np.asarray(P, dtype=float) / 100.0
+    if f[-1] < 1.0:
+        raise ValueError('breakagePotential: %.3g %% is retained on the coarsest sieve (%g mm); add a coarser '
+                         'sieve' % (100 * (1 - f[-1]), sieves[-1]))
+    x0 = np.log10(d0)
+    top = int(np.argmax(f >= 1.0))                 # the first sieve passing everything
+    grid = np.concatenate([[x0], x[(x > x0) & (np.arange(len(x)) <= top)]])
+    g = 1.0 - np.interp(grid, x, f, left=f[0])     # the fraction retained above each size
+    if x0 >= x[top]:
+        return 0.0
+    return float(np.sum(0.5 * (g[1:] + g[:-1]) * np.diff(grid)))
+
+
+def hardin(before, after, sieves=SIEVES_MM):
+    """Hardin's relative breakage B_r = (B_p(before) - B_p(after)) / B_p(before) [-]."""
+    bp = breakagePotential(before, sieves)
+    return (bp - breakagePotential(after, sieves)) / bp if bp > 0 else 0.0
