@@ -330,3 +330,26 @@ def test_grading_after_crushing_counts_the_lost_mass_as_fines(weak):
     assert s['Bg'] == pytest.approx(grading.marsal(a[:, 1], a[:, 2]), rel=1e-5) and s['Bg'] > 0
     assert 0 < s['Br'] < 1
     assert s['Br'] == pytest.approx(grading.hardin(a[:, 1], a[:, 2]), rel=1e-5)
+
+
+# ------------------------------------------------------------------------------------ many cycles
+def test_three_cycles_write_cycles_csv(strong, root):
+    """cycles = 3 between Fmax and Fmin = 0.2 Fmax on the strong packing: three rows of cycles.csv, one
+    per cycle, at its end; the permanent settlement is delta at the cycle's lowest force; the resilient
+    displacement is delta at the cycle's peak minus that; nothing crushes, B_g stays 0."""
+    run = Oedometer(f=F_STRONG, ft0=1e12, strength=1e15, cycles=3, Fmin=0.2 * FMAX, results=os.path.join(root, 'cycles'),
+                    runId='three', packingDir=os.path.join(root, 'packings'), **SMALL)
+    s = run.run()
+    c = np.loadtxt(os.path.join(run.out, 'cycles.csv'), delimiter=',', skiprows=1, ndmin=2)
+    fd = np.loadtxt(os.path.join(run.out, 'fd.csv'), delimiter=',', skiprows=1, ndmin=2)
+    T = 1 / F_STRONG
+    assert list(c[:, 0]) == [1, 2, 3] and s['cycles'] == pytest.approx(3, rel=1e-3)
+    np.testing.assert_allclose(c[:, 1], [T, 2 * T, 3 * T], rtol=1e-3)
+    for k, t, settlement, resilient in c[:, :4]:
+        assert settlement == pytest.approx(np.interp(t, fd[:, 0], fd[:, 2]), abs=1e-3 * s['deltaMax'])
+        peak = np.interp((k - 0.5) * T, fd[:, 0], fd[:, 2])
+        assert resilient == pytest.approx(peak - settlement, abs=1e-3 * s['deltaMax']) and resilient > 0
+    assert np.all(c[:, 4:6] == 0) and np.all(c[:, 6] == 0)
+    later = fd[:, 0] > 0.6 * T
+    assert np.min(fd[later, 5]) == pytest.approx(0.2 * FMAX, rel=1e-3)  # the applied force's lower bound
+    assert os.path.getsize(os.path.join(run.out, 'cycles.png')) > 0

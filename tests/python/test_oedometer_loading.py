@@ -10,7 +10,7 @@ pytest.importorskip('yade')
 from yade import O, utils  # noqa: E402
 
 from ballast.oedometer import callbacks, check, scene  # noqa: E402
-from ballast.oedometer.loading import DisplacementLoad, PlateLoad, ServoLoad, eq8  # noqa: E402
+from ballast.oedometer.loading import DisplacementLoad, PlateLoad, ServoLoad, eq8, loadCurve  # noqa: E402
 
 FMAX, F = 2e4, 50.0   # [N], [Hz]: a small load, a short cycle
 R = 0.02              # [m] the grain
@@ -27,6 +27,17 @@ def test_eq8_by_hand():
     assert eq8(FMAX, F, 3 * T / 4) == pytest.approx(FMAX / 2, rel=1e-12)
     t = np.linspace(0, T, 7)
     np.testing.assert_allclose(eq8(FMAX, F, t), [eq8(FMAX, F, float(x)) for x in t], rtol=1e-14, atol=1e-9)
+
+
+def test_load_curve_by_hand():
+    """Eq. 8 up to the peak at T/2, then between Fmax and Fmin: Fmin at T, 2T, ...; Fmax at 3T/2; halfway
+    at 5T/4; with Fmin = 0 eq. 8 itself."""
+    T, Fmin = 1 / F, 0.25 * FMAX
+    for t, want in ((0, 0), (T / 4, FMAX / 2), (T / 2, FMAX), (T, Fmin), (1.25 * T, (FMAX + Fmin) / 2), (1.5 * T, FMAX),
+                    (2 * T, Fmin)):
+        assert loadCurve(FMAX, Fmin, F, t) == pytest.approx(want, rel=1e-12, abs=1e-9 * FMAX)
+    t = np.linspace(0, 3 * T, 50)
+    np.testing.assert_allclose(loadCurve(FMAX, 0.0, F, t), eq8(FMAX, F, t), rtol=1e-12, atol=1e-9 * FMAX)
 
 
 class OneGrain:
@@ -88,6 +99,24 @@ def test_plate_follows_eq8_on_one_grain(mode, law):
     weight = O.bodies[exp.grain].state.mass * 9.81
     assert np.max(np.abs(Ff - Fp - weight)[seated]) <= TOL_STATICS * FMAX
     assert d[np.argmax(Fp)] > 0  # the plate went down into the grain
+    callbacks.setLive(None)
+
+
+def test_plate_cycles_between_fmax_and_fmin():
+    """Fmin > 0: after the first peak the applied force is loadCurve's cycle (the force table switches at
+    T/2), for two more cycles."""
+    Fmin = 0.3 * FMAX
+    exp, _ = oneGrain('plate', Fmin=Fmin)
+    t, Fa = [], []
+    steps = int(1 / F / O.dt)
+    for _ in range(250):
+        O.run(int(2.5 * steps) // 250, True)
+        t.append(O.time - exp.loading.t0 - O.dt)  # the force recorded was applied at the start of the last step
+        Fa.append(exp.loading.applied())
+    t, Fa = np.array(t), np.array(Fa)
+    assert t[-1] > 2.4 / F
+    assert np.max(np.abs(Fa - loadCurve(FMAX, Fmin, F, t))) <= TOL_APPLIED * FMAX
+    assert np.min(Fa[t > 0.6 / F]) == pytest.approx(Fmin, rel=1e-3)
     callbacks.setLive(None)
 
 

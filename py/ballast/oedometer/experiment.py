@@ -132,13 +132,15 @@ class Oedometer:
         self.adopt()
         t0 = self.loading.t0
         done = math.floor((O.time - t0 + 0.5 * O.dt) / self.T)
-        tStart, tEnd = O.time, t0 + (done + 1) * self.T
+        tStart, tEnd = O.time, t0 + (done + p['cycles']) * self.T
         self.phases.run('load', self.loading.done, tEnd=tEnd, simSpan=tEnd - tStart, simStart=tStart,
                         afterChunk=self.checkContainment,
-                        extra=lambda: 'F=%.0f kN  delta=%.1f mm  crushed %d  abraded %d' % (
+                        extra=lambda: 'cycle %d/%d  F=%.0f kN  delta=%.1f mm  crushed %d  abraded %d' % (
+                            min(math.floor((O.time - t0) / self.T) + 1, done + p['cycles']), done + p['cycles'],
                             self.loading.force() / 1e3, self.loading.delta() * 1e3, self.counter('crush', 'nCrushed'),
                             self.counter('abrasion', 'nAbraded')))
         self.outputs.record()  # the last row, at the end of the cycle
+        self.outputs.cycleEnd()
         self.save(os.path.join(self.out, 'state-end.yade.gz'))
         s = self.summary()
         self.outputs.finish(self, s)

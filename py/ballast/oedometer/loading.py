@@ -33,6 +33,15 @@ def eq8(Fmax, f, t):
     return Fmax / 2 * (math.sin(2 * math.pi * f * t - math.pi / 2) + 1)
 
 
+def loadCurve(Fmax, Fmin, f, t):
+    """The load [N] at loading time t [s]: eq. 8 up to its peak at T/2 = 1/(2f), then cycles between Fmax
+    and Fmin, Fmin + (Fmax - Fmin)/2 [1 + cos(2 pi f (t - T/2))]; with Fmin = 0 it is eq. 8 at every t."""
+    t = np.asarray(t, dtype=float)
+    later = Fmin + (Fmax - Fmin) / 2 * (1 + np.cos(2 * math.pi * f * (t - 0.5 / f)))
+    F = np.where(t <= 0.5 / f, eq8(Fmax, f, t), later)
+    return F if F.ndim else float(F)
+
+
 class PlateBase:
     """A steel plate (a YADE Box a little wider than the cylinder, free or kinematic along the axis only)
     seated on the highest grain at the start of loading."""
@@ -73,8 +82,9 @@ class PlateBase:
         self.t0 = O.time
 
     def target(self, t):
-        """Eq. 8 at loading time t [s]."""
-        return eq8(self.p['Fmax'], self.p['f'], t)
+        """The load at loading time t [s] (loadCurve: eq. 8, then cycles down to Fmin)."""
+        p = self.p
+        return eq8(p['Fmax'], p['f'], t) if p['Fmin'] == 0 else loadCurve(p['Fmax'], p['Fmin'], p['f'], t)
 
     def delta(self):
         """Plate displacement since the start of loading [m] (the paper's delta)."""
@@ -95,13 +105,30 @@ class PlateBase:
 class PlateLoad(PlateBase):
     """Eq. 8 applied to a free steel plate."""
 
+    SWITCH = 'oedoLoadSwitch'
+
     def start(self, exp, steel):
         self.seat(exp, steel, dynamic=True)
-        T = 1.0 / self.p['f']
+        p = self.p
+        T = 1.0 / p['f']
         tau = np.linspace(0, T, EQ8_SAMPLES + 1)
-        scene.insertBeforeNewton([InterpolatingDirectedForceEngine(
-            ids=[self.plate], times=list(self.t0 + tau), magnitudes=list(eq8(self.p['Fmax'], self.p['f'], tau)),
-            direction=Vector3(0, 0, -1), wrap=True, label=self.LABEL)])
+        engines = [InterpolatingDirectedForceEngine(
+            ids=[self.plate], times=list(self.t0 + tau), magnitudes=list(eq8(p['Fmax'], p['f'], tau)),
+            direction=Vector3(0, 0, -1), wrap=True, label=self.LABEL)]
+        if p['Fmin'] > 0:  # at T/2 the force table becomes the cycle between Fmax and Fmin (once, in Python)
+            engines.append(PyRunner(command=command('loading', 'switchToCycles'), virtPeriod=T / 2, virtLast=self.t0,
+                                    label=self.SWITCH))
+        scene.insertBeforeNewton(engines)
+
+    def switchToCycles(self):
+        p = self.p
+        T = 1.0 / p['f']
+        tau = np.linspace(0.5 * T, 1.5 * T, EQ8_SAMPLES + 1)
+        e = self.engine()
+        e.times, e.magnitudes = list(self.t0 + tau), list(loadCurve(p['Fmax'], p['Fmin'], p['f'], tau))
+        for r in O.engines:
+            if r.label == self.SWITCH:
+                r.dead = True  # once (PeriodicEngine's nDo counts its silent first call)
 
     def engine(self):
         return next(e for e in O.engines if e.label == self.LABEL)

@@ -15,6 +15,7 @@ from .callbacks import command
 
 FD_COLUMNS = ('t', 'F', 'delta', 'nCrushed', 'nAbraded', 'Fapplied')
 CHECK_COLUMNS = ('t', 'iter', 'nCrushed', 'maxStressRatio')
+CYCLE_COLUMNS = ('cycle', 't', 'settlement', 'resilient', 'nCrushed', 'nAbraded', 'Bg')
 EVENT_COLUMNS = ('kind', 't', 'iter', 'id', 'x', 'y', 'z', 'radius', 'value', 'strength', 'newIds')
 GRAIN_COLUMNS = ('id', 'x', 'y', 'z', 'r', 'mass', 'generation', 'parent', 'nAbraded', 'stressRatio')
 
@@ -71,20 +72,21 @@ class Outputs:
     """Writes the run's files into exp.out. Replace it by any object with start(exp), finish(exp),
     state(), setState(s); the PyRunners call record(), logCheck() and vtk()."""
 
-    RECORDER, CHECKLOG, VTK = 'oedoRecorder', 'oedoCheckLog', 'oedoVtk'
+    RECORDER, CHECKLOG, VTK, CYCLES = 'oedoRecorder', 'oedoCheckLog', 'oedoVtk', 'oedoCycles'
 
     def __init__(self):
-        self.rows, self.checkRows, self.vtkFrames = [], [], []
+        self.rows, self.checkRows, self.vtkFrames, self.cycleRows = [], [], [], []
         self.grains = GrainStates()
         self.exp = None
 
     def state(self):
-        return {'rows': self.rows, 'checkRows': self.checkRows, 'vtkFrames': self.vtkFrames}
+        return {'rows': self.rows, 'checkRows': self.checkRows, 'vtkFrames': self.vtkFrames, 'cycleRows': self.cycleRows}
 
     def setState(self, s):
         self.rows = [tuple(r) for r in s['rows']]
         self.checkRows = [tuple(r) for r in s['checkRows']]
         self.vtkFrames = [tuple(f) for f in s['vtkFrames']]
+        self.cycleRows = [tuple(r) for r in s.get('cycleRows', [])]
 
     # ------------------------------------------------------------------ while loading
     def start(self, exp):
@@ -95,6 +97,9 @@ class Outputs:
         if exp.engine('crush') is not None:  # fires at the steps the crushing engine does
             kw = {'virtPeriod': p['Tc']} if p['Tc'] > 0 else {'iterPeriod': 1}
             engines.append(PyRunner(command=command('outputs', 'logCheck'), label=self.CHECKLOG, **kw))
+        # at the end of every cycle (the first step past it; load() records the last one itself)
+        engines.append(PyRunner(command=command('outputs', 'cycleEnd'), virtPeriod=exp.T, virtLast=O.time,
+                                label=self.CYCLES))
         if p['vtk'] > 0:
             engines.append(PyRunner(command=command('outputs', 'vtk'), virtPeriod=p['vtk'], initRun=True, label=self.VTK))
         O.engines = O.engines + engines
@@ -138,6 +143,26 @@ class Outputs:
             b = O.bodies[i]
             if b is not None:
                 b.shape.color = self.grains.color(i)
+
+    def cycleEnd(self):
+        """A row of cycles.csv: the cycle just ended, the permanent settlement (delta at the cycle's lowest
+        force, its end), the resilient displacement (delta at its peak, T/2 before, minus that), the crushes
+        and abrasions in it and Marsal's B_g after it."""
+        exp = self.exp
+        t = O.time - exp.loading.t0
+        k = int(round(t / exp.T))
+        if k < 1 or (self.cycleRows and self.cycleRows[-1][0] >= k):
+            return
+        a = np.array(self.rows)
+        settlement = exp.loading.delta()
+        peak = float(np.interp((k - 0.5) * exp.T, a[:, 0], a[:, 2]))
+        crushed, abraded = exp.counter('crush', 'nCrushed'), exp.counter('abrasion', 'nAbraded')
+        self.cycleRows.append((k, t, settlement, peak - settlement, crushed, abraded, grading.marsal(*exp.grading())))
+        with open(os.path.join(exp.out, 'cycles.csv'), 'w') as fh:
+            fh.write(','.join(CYCLE_COLUMNS) + '\n')
+            for i, row in enumerate(self.cycleRows):
+                prev = self.cycleRows[i - 1][4:6] if i else (0, 0)
+                fh.write('%d,%.9g,%.9g,%.9g,%d,%d,%.6g\n' % (row[:4] + (row[4] - prev[0], row[5] - prev[1], row[6])))
 
     def logCheck(self):
         crush = self.exp.engine('crush')
@@ -207,6 +232,28 @@ class Outputs:
             json.dump(summary, fh, indent=1)
         self.plot(exp, events)
         self.writeGrading(exp, summary)
+        if len(self.cycleRows) > 1:
+            self.plotCycles(exp)
+
+    def plotCycles(self, exp):
+        """cycles.png: permanent settlement and B_g against the number of cycles (log axis)."""
+        import matplotlib
+        matplotlib.use('Agg')
+        import matplotlib.pyplot as plt
+        c = np.array(self.cycleRows, dtype=float)
+        fig, ax = plt.subplots(figsize=(7, 4.5))
+        ax.semilogx(c[:, 0], c[:, 2] * 1e3, 'o-', color='C0', label='permanent settlement')
+        ax.set_xlabel('load cycles N')
+        ax.set_ylabel('settlement [mm]', color='C0')
+        ax.grid(alpha=0.3, which='both')
+        ax2 = ax.twinx()
+        ax2.semilogx(c[:, 0], c[:, 6], 's--', color='C3', label='$B_g$')
+        ax2.set_ylabel("Marsal's $B_g$ [%]", color='C3')
+        ax.set_title('%s: %d cycles between %g and %g kN at %g Hz' % (exp.runId, len(c), exp.p['Fmin'] / 1e3,
+                                                                     exp.p['Fmax'] / 1e3, exp.p['f']), fontsize=9)
+        fig.tight_layout()
+        fig.savefig(os.path.join(exp.out, 'cycles.png'), dpi=120)
+        plt.close(fig)
 
     def writeGrading(self, exp, summary):
         """psd.csv (sieve [mm], % passing before and after loading) and grading.png."""

@@ -66,6 +66,10 @@ PARAMS = {
     'f': Param(8.0, 'Hz', 'loading frequency of eq. 8 (the paper: 0.25 to 8 Hz, almost no effect)', positive,
                NUMBER_POSITIVE),
     'Fmax': Param(1.5e6, 'N', 'peak force of eq. 8', positive, NUMBER_POSITIVE),
+    'cycles': Param(1, '-', 'load cycles of one load() (each of period 1/f)', positiveInt, 'an integer >= 1'),
+    'Fmin': Param(0.0, 'N', 'lower force of the cycles after the first half-cycle (eq. 8 rises from 0 to Fmax; the '
+                  'force then cycles between Fmax and Fmin, as a track between its seating load and a peak)',
+                  nonNegative, NUMBER_NONNEGATIVE),
     'loadMode': Param('plate', '-', "'plate': eq. 8 applied to a steel plate free along the axis; 'servo': a kinematic "
                       "plate whose speed follows the force error (at most vMax); 'displacement': the plate moves at "
                       "plateSpeed until the grains carry Fmax", choice('plate', 'servo', 'displacement'),
@@ -131,6 +135,8 @@ def crossCheck(p):
         bad('dMax', 'must be smaller than height = %g' % p['height'])
     if p['rMin'] > p['dMax'] / 2:
         bad('rMin', 'larger than the largest grain radius dMax/2 = %g' % (p['dMax'] / 2))
+    if p['Fmin'] >= p['Fmax']:
+        bad('Fmin', 'must be smaller than Fmax = %g' % p['Fmax'])
     if p['prepYoung'] > p['young']:
         bad('prepYoung', 'must not exceed young = %g' % p['young'])
 
