@@ -75,7 +75,7 @@ class Phases:
             elapsed = O.time - simStart
             rate = (hist[-1][1] - hist[0][1]) / max(hist[-1][0] - hist[0][0], 1e-9) if len(hist) > 1 else 0
             eta = (simSpan - elapsed) / rate if rate > 0 else None
-            line += '  %5.1f%% of %s  ETA %s' % (100 * min(elapsed / simSpan, 1), 'cycle' if phase == 'load' else 'phase',
+            line += '  %5.1f%% of %s  ETA %s' % (100 * min(elapsed / simSpan, 1), 'loading' if phase == 'load' else 'phase',
                                                  fmtTime(eta))
         if extra:
             line += '  ' + extra()
