@@ -122,8 +122,9 @@ class Oedometer:
         return self
 
     def load(self):
-        """Run the loading of eq. 8 to the end of the current cycle (a new cycle if the last one is
-        complete), then write every output and save the state. Returns the summary."""
+        """Run `cycles` load cycles (eq. 8, then between Fmax and Fmin) from the end of the last complete
+        one (from a state saved mid-cycle, that cycle is the first of them), then write every output and
+        save the state. Returns the summary."""
         p = self.p
         if self.initial is None:
             if self.cylinder is None:
