@@ -32,21 +32,21 @@ from .. import engines as ballastEngines
 from .. import grading
 from ..engines import BallastAbrasionEngine, BallastCrushEngine
 from ..geometry import sphereVolume
-from ..names import runDirName
+from ..names import fmtTime, runDirName
+from ..params import validate
 from . import callbacks, scene
 from .callbacks import command
 from .loading import MODES
 from .outputs import Outputs
 from .packing import StoredPacking
 from .parameters import OWNER, PARAMS, check
-from ..names import fmtTime
 from .progress import Phases
 
 STATE_TAG = 'ballast.oedometer'           # the experiment's state (JSON), written by save()
 TOKEN_TAG = 'ballast.oedometer.token'     # which experiment built this scene
 SAVER = 'oedoSaver'
 # parameters a reopened run may change: where and how it reports, not the physics
-REOPEN_PARAMS = ('results', 'runId', 'progress', 'vtk', 'saveEvery', 'timing')
+REOPEN_PARAMS = ('results', 'runId', 'progress', 'vtk', 'saveEvery', 'timing', 'cycles')
 
 
 class Oedometer:
@@ -121,11 +121,13 @@ class Oedometer:
         self.adopt()
         return self
 
-    def load(self):
-        """Run `cycles` load cycles (eq. 8, then between Fmax and Fmin) from the end of the last complete
-        one (from a state saved mid-cycle, that cycle is the first of them), then write every output and
-        save the state. Returns the summary."""
+    def load(self, cycles=None):
+        """Load until the run has `cycles` cycles in all (eq. 8, then between Fmax and Fmin; a state saved
+        mid-run goes on to that number), or, if it has them already, one more; `cycles` given: that many
+        more. Then write every output and save the state. Returns the summary."""
         p = self.p
+        if cycles is not None:
+            cycles = validate(OWNER + '.load', {'cycles': PARAMS['cycles']}, 'cycles', cycles)
         if self.initial is None:
             if self.cylinder is None:
                 self.prepare()
@@ -133,11 +135,12 @@ class Oedometer:
         self.adopt()
         t0 = self.loading.t0
         done = math.floor((O.time - t0 + 0.5 * O.dt) / self.T)
-        tStart, tEnd = O.time, t0 + (done + p['cycles']) * self.T
+        total = done + cycles if cycles is not None else (p['cycles'] if done < p['cycles'] else done + 1)
+        tStart, tEnd = O.time, t0 + total * self.T
         self.phases.run('load', self.loading.done, tEnd=tEnd, simSpan=tEnd - tStart, simStart=tStart,
                         afterChunk=self.checkContainment,
                         extra=lambda: 'cycle %d/%d  F=%.0f kN  delta=%.1f mm  crushed %d  abraded %d' % (
-                            min(math.floor((O.time - t0) / self.T) + 1, done + p['cycles']), done + p['cycles'],
+                            min(math.floor((O.time - t0) / self.T) + 1, total), total,
                             self.loading.force() / 1e3, self.loading.delta() * 1e3, self.counter('crush', 'nCrushed'),
                             self.counter('abrasion', 'nAbraded')))
         self.outputs.record()  # the last row, at the end of the cycle
