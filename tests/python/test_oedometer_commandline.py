@@ -59,17 +59,14 @@ def test_help_lists_parameters_with_units():
     assert 'f_t = ft0 / r^m [Pa m^m]' in text and 'loading frequency of eq. 8' in text and '[Hz]' in text
 
 
-def test_bad_table_cell_names_the_column(tmp_path):
-    table = tmp_path / 'bad.table'
-    table.write_text('seed pattern\n1 planar5\n')
-    p = yade(['--results', tmp_path / 'r'], env=dict(ENV, YADE_BATCH='%s:2' % table))
+@pytest.mark.parametrize('table,message', [
+    ('seed pattern\n1 planar5\n', 'bad parameter pattern:'),                                # a bad cell
+    ('seed Fm\n1 2\n', 'bad parameter Fm: Oedometer: Fm is not a parameter'),               # an unknown column
+])
+def test_bad_table_is_named_before_any_work(table, message, tmp_path):
+    path = tmp_path / 'bad.table'
+    path.write_text(table)
+    p = yade(['--results', tmp_path / 'r'], env=dict(ENV, YADE_BATCH='%s:2' % path))
     assert p.returncode == 2
-    assert 'bad parameter pattern:' in p.stderr
-
-
-def test_unknown_table_column(tmp_path):
-    table = tmp_path / 'bad.table'
-    table.write_text('seed Fm\n1 2\n')
-    p = yade(['--results', tmp_path / 'r'], env=dict(ENV, YADE_BATCH='%s:2' % table))
-    assert p.returncode == 2
-    assert 'bad parameter Fm: Oedometer: Fm is not a parameter' in p.stderr
+    assert message in p.stderr
+    assert not (tmp_path / 'r').exists()
