@@ -1,7 +1,6 @@
 """ballast.oedometer.parameters: the experiment's declarations (readable without YADE), the checks
 between parameters, and the packing key."""
 import subprocess
-import sys
 
 import pytest
 
