@@ -1,5 +1,5 @@
 """Grading of ballast and breakage indices (issue 12): the percentage passing each sieve by mass, and
-Marsal's and Hardin's breakage indices between two gradings. Plain NumPy: no YADE.
+Marsal's, Hardin's and Indraratna's breakage indices between two gradings. Plain NumPy: no YADE.
 
 A sphere of diameter d passes a square-mesh sieve of aperture a when d <= a. Sieves (SIEVES_MM): the
 railway ballast sieves of EN 13450 (22.4, 31.5, 40, 50, 63, 80 mm; 0.5 mm for fine particles and
@@ -12,6 +12,7 @@ import numpy as np
 
 SIEVES_MM = (0.063, 0.5, 1.0, 2.0, 4.0, 8.0, 11.2, 16.0, 22.4, 31.5, 40.0, 50.0, 63.0, 80.0)
 HARDIN_D0_MM = 0.074  # [mm] Hardin's lower limit of breakage potential (the No. 200 sieve)
+BBI_FINEST_MM = 0.075  # [mm] where our boundary of maximum breakage reaches 0 % passing (the 75 um sieve)
 
 
 def passing(diameters, masses, sieves=SIEVES_MM, fines=0.0):
@@ -62,3 +63,39 @@ def hardin(before, after, sieves=SIEVES_MM):
     """Hardin's relative breakage B_r = (B_p(before) - B_p(after)) / B_p(before) [-]."""
     bp = breakagePotential(before, sieves)
     return (bp - breakagePotential(after, sieves)) / bp if bp > 0 else 0.0
+
+
+def _areaBetween(upper, lower, x):
+    """Integral over x of upper - lower, both linear between the points x (trapezoids)."""
+    return float(np.sum(0.5 * ((upper - lower)[1:] + (upper - lower)[:-1]) * np.diff(x)))
+
+
+def topSize(P, sieves=SIEVES_MM):
+    """The smallest sieve that passes 100 % of a grading [mm]."""
+    P = np.asarray(P, dtype=float)
+    if P[-1] < 100.0 - 1e-9:
+        raise ValueError('topSize: %.3g %% is retained on the coarsest sieve (%g mm); add a coarser sieve'
+                         % (100 - P[-1], sieves[-1]))
+    return float(sieves[int(np.argmax(P >= 100.0 - 1e-9))])
+
+
+def bbi(before, after, sieves=SIEVES_MM, finest=BBI_FINEST_MM, top=None):
+    """Indraratna's ballast breakage index BBI = A / (A + B) [-] (Indraratna, Lackenby & Christie 2005):
+    on the grading chart (percentage passing against log10 of the size), A is the area between the
+    grading after and the grading before, B the area between the boundary of maximum breakage and the
+    grading after. The reference draws that boundary by hand ("arbitrary"); ours is the straight line
+    from 0 % passing at `finest` [mm] to 100 % at `top` [mm] (default: the top size of the grading
+    before), both curves linear in log10(size) between the sieves, areas over [finest, top]. 0 without
+    breakage, 1 when the grading after lies on the boundary (above it, BBI > 1)."""
+    top = topSize(before, sieves) if top is None else float(top)
+    if not 0 < finest < top:
+        raise ValueError('bbi: the boundary needs 0 < finest < top, got finest = %r mm, top = %r mm' % (finest, top))
+    xs = np.log10(np.asarray(sieves, dtype=float))
+    x0, x1 = np.log10(finest), np.log10(top)
+    x = np.concatenate([[x0], xs[(xs > x0) & (xs < x1)], [x1]])
+    b = np.interp(x, xs, np.asarray(before, dtype=float))
+    a = np.interp(x, xs, np.asarray(after, dtype=float))
+    boundary = 100.0 * (x - x0) / (x1 - x0)
+    A = _areaBetween(a, b, x)
+    AB = _areaBetween(boundary, b, x)  # A + B
+    return A / AB if AB > 0 else 0.0

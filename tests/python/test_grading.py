@@ -70,3 +70,29 @@ def test_sieve_series():
     assert np.all(np.diff(s) > 0)
     for a in (0.063, 0.5, 22.4, 31.5, 40, 50, 63, 80):  # EN 13450's railway ballast sieves
         assert a in grading.SIEVES_MM
+
+
+def test_bbi_by_hand():
+    """Before: 0 % passing up to 10 mm, then linear in log10(d) to 100 % at 100 mm (its top size).
+    After: 25 % passing 10 mm. A, between the curves: a triangle of height 25 over log10(1) to log10(100)
+    = 25. The boundary of maximum breakage runs from 0 % at 0.075 mm to 100 % at 100 mm over the log
+    length L = 2 - log10(0.075): the area under it is 50 L, the area under the grading before 50 (a
+    triangle over [1, 2]): A + B = 50 (L - 1), BBI = 0.5 / (L - 1) = 0.235301."""
+    before, after = [0, 0, 0, 100], [0, 0, 25, 100]
+    L = 2 - math.log10(0.075)
+    assert grading.bbi(before, after, SIEVES) == pytest.approx(0.5 / (L - 1), rel=1e-12)
+    assert grading.bbi(before, before, SIEVES) == 0.0
+    # the boundary from 1 mm instead: it passes 50 % at 10 mm, the grading after 25 %; A = 25 as above and
+    # A + B = the area under the boundary (100) minus the area under the grading before (50): BBI = 0.5
+    assert grading.bbi(before, after, SIEVES, finest=1.0) == pytest.approx(0.5, rel=1e-12)
+    # a grading after that lies on that boundary: BBI = 1
+    assert grading.bbi(before, [0, 0, 50, 100], SIEVES, finest=1.0) == pytest.approx(1.0, rel=1e-12)
+
+
+def test_bbi_boundary_is_checked():
+    with pytest.raises(ValueError, match='finest = 200'):
+        grading.bbi([0, 0, 0, 100], [0, 0, 25, 100], SIEVES, finest=200.0)
+    with pytest.raises(ValueError, match='coarsest sieve'):
+        grading.bbi([0, 0, 0, 90], [0, 0, 25, 100], SIEVES)
+    # the top size of a grading is the first sieve that passes everything
+    assert grading.topSize([0, 0, 100, 100], SIEVES) == 10.0

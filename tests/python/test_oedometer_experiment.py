@@ -316,7 +316,7 @@ def test_grading_unchanged_without_degradation(strong):
     run, s = strong[:2]
     a = psd(run.out)
     np.testing.assert_allclose(a[:, 1], a[:, 2], rtol=1e-12)
-    assert s['Bg'] == 0.0 and s['Br'] == pytest.approx(0.0, abs=1e-12)
+    assert s['Bg'] == 0.0 and s['Br'] == pytest.approx(0.0, abs=1e-12) and s['BBI'] == pytest.approx(0.0, abs=1e-12)
     assert os.path.getsize(os.path.join(run.out, 'grading.png')) > 0
 
 
@@ -332,6 +332,8 @@ def test_grading_after_crushing_counts_the_lost_mass_as_fines(weak):
     assert s['Bg'] == pytest.approx(grading.marsal(a[:, 1], a[:, 2]), rel=1e-5) and s['Bg'] > 0
     assert 0 < s['Br'] < 1
     assert s['Br'] == pytest.approx(grading.hardin(a[:, 1], a[:, 2]), rel=1e-5)
+    assert s['BBI'] > 0  # above 1 here: the dust passing 0.063 mm lies above the boundary's 0 % at 0.075 mm
+    assert s['BBI'] == pytest.approx(grading.bbi(a[:, 1], a[:, 2]), rel=1e-5)
 
 
 # ------------------------------------------------------------------------------------ many cycles

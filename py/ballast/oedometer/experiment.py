@@ -305,6 +305,7 @@ class Oedometer:
             'maxGeneration': int(np.max(self.outputs.grains.generation, initial=0)),
             'Bg': grading.marsal(before, after),
             'Br': grading.hardin(before, after),
+            'BBI': grading.bbi(before, after),
             'lostAsFines': p['lostAsFines'],
             'plateHeight0': self.loading.z0,
             'porosity0': self.porosity0(),

@@ -269,10 +269,13 @@ class Outputs:
         ax.semilogx(grading.SIEVES_MM, before, 'o-', label='before loading')
         ax.semilogx(grading.SIEVES_MM, after, 's-', label='after loading%s' % (
             ' (lost volume as fines)' if summary['lostAsFines'] else ''))
+        ax.semilogx([grading.BBI_FINEST_MM, grading.topSize(before)], [0, 100], 'k--', lw=0.8,
+                    label='boundary of maximum breakage (BBI)')
         ax.set_xlabel('sieve size [mm]')
         ax.set_ylabel('passing by mass [%]')
         ax.set_ylim(0, 100)
-        ax.set_title('grading %s: $B_g$ = %.1f %%, $B_r$ = %.3f' % (exp.runId, summary['Bg'], summary['Br']), fontsize=9)
+        ax.set_title('grading %s: $B_g$ = %.1f %%, $B_r$ = %.3f, BBI = %.3f'
+                     % (exp.runId, summary['Bg'], summary['Br'], summary['BBI']), fontsize=9)
         ax.grid(alpha=0.3, which='both')
         ax.legend(fontsize=8)
         fig.tight_layout()

@@ -21,11 +21,11 @@ from .table import cellValue
 
 # Results of summary.json carried into the tables; (key, unit)
 RESULTS = [('peakForce', 'N'), ('deltaAtPeak', 'm'), ('deltaAtAppliedPeak', 'm'), ('seatingDelta', 'm'), ('deltaMax', 'm'),
-           ('deltaFinal', 'm'), ('nCrushed', '-'), ('Bg', '%'), ('Br', '-'),
+           ('deltaFinal', 'm'), ('nCrushed', '-'), ('Bg', '%'), ('Br', '-'), ('BBI', '-'),
            ('nAbraded', '-'), ('volumeLost', 'm^3'), ('massLost', 'kg'), ('massInitial', 'kg'), ('nGrainsInitial', '-'),
            ('porosity0', '-'), ('wallSeconds', 's'), ('cpuSeconds', 's'), ('steps', '-')]
 STATS = ['deltaAtPeak', 'deltaAtAppliedPeak', 'deltaMax', 'peakForce', 'nCrushed', 'nAbraded', 'massLost', 'Bg', 'Br',
-         'wallSeconds']
+         'BBI', 'wallSeconds']
 LABELS = {'f': 'loading frequency f [Hz]', 'Tc': 'crushing period $T_c$ [s]', 'rMin': '$r_{min}$ [m]', 'ft0': '$f_{t0}$ [Pa m]',
           'gamma': r'reduction factor $\gamma$ [-]', 'pattern': 'replacement pattern'}
 
