@@ -10,6 +10,7 @@
 #include "../BallastAbrasionEngine.hpp"
 #include "../BallastCrushEngine.hpp"
 #include "../FabricStress.hpp"
+#include "../Fatigue.hpp"
 #include "../FragmentPattern.hpp"
 #include "../HertzPressure.hpp"
 #include "../InputCheck.hpp"
@@ -257,6 +258,26 @@ bp::tuple py_abrasionCheck(const bp::object& radii, const bp::object& grain1, co
 	return bp::make_tuple(p0, flag);
 }
 
+bp::tuple py_fatigueCheck(const bp::object& ratio, const bp::object& radii, const bp::object& state, double exponent,
+                          double endurance, double hysteresis, double rMin)
+{
+	FatigueParameters p{exponent, endurance, hysteresis};
+	p.validate();
+	np::ndarray s = asDoubles(ratio, "ratio");
+	const long  n = requireShape(s, "ratio", {-1}, "a 1-d array");
+	np::ndarray r = asDoubles(radii, "radii");
+	requireShape(r, "radii", {n}, "an (" + std::to_string(n) + ",) array, one radius per ratio");
+	np::ndarray st0 = asDoubles(state, "state");
+	requireShape(st0, "state", {n, 4}, "an (" + std::to_string(n) + ",4) array (damage, extreme, rising, peaks) per ratio");
+	np::ndarray out = emptyDoubles({n, 4});
+	std::copy(dptr(st0), dptr(st0) + 4 * n, wptr(out));
+	std::vector<unsigned char> crush(n);
+	evaluateFatigue(p, rMin, n, dptr(s), dptr(r), reinterpret_cast<GrainFatigue*>(wptr(out)), crush.data());
+	np::ndarray flag = np::zeros(bp::make_tuple(n), np::dtype::get_builtin<bool>());
+	std::copy(crush.begin(), crush.end(), reinterpret_cast<bool*>(flag.get_data()));
+	return bp::make_tuple(out, flag);
+}
+
 np::ndarray py_abrasionBound(const bp::object& stresses, const bp::object& radii, double rPartner, double EstarMax)
 {
 	np::ndarray s = asDoubles(stresses, "stresses");
@@ -400,6 +421,11 @@ BOOST_PYTHON_MODULE(_ballast)
 	bp::def("crushCheck", py_crushCheck, (bp::arg("stresses"), "radii", "ft0", "m", "rMin"),
 	        "Crushing decision for all grains (eq. 1): stresses (N,3,3) [Pa], radii (N,) [m].\n"
 	        "Returns (sigmaE (N,) [Pa], strength (N,) [Pa], crush (N,) bool); grains with r < rMin never crush.");
+	bp::def("fatigueCheck", py_fatigueCheck, (bp::arg("ratio"), "radii", "state", "exponent", "endurance", "hysteresis", "rMin"),
+	        "Fatigue (docs/fatigue.md): one sample of the stress ratio sigma_e / f_t (N,) [-] of grains of radii (N,) [m],\n"
+	        "their state (N,4) (damage D, running extreme, rising 0/1, damaging peaks; a new grain is 0, 0, 1, 0);\n"
+	        "a peak >= endurance [-] ends when the ratio falls hysteresis [-] below it and adds peak^exponent to D.\n"
+	        "Returns (the new state (N,4), crush (N,) bool: r >= rMin and ratio > 1 - D).");
 	bp::def("abrasionCheck", py_abrasionCheck, (bp::arg("radii"), "grain1", "grain2", "Fn", "R1", "R2", "uN", "strength", "rMin"),
 	        "Abrasion decision for all grains (eq. 6 with eq. 7): radii (N,) [m]; per contact (M,): grain1, grain2 the grain\n"
 	        "index of each side or -1, Fn [N], R1, R2 [m] (0 = wall), uN [m]; strength [Pa]; rMin [m].\n"

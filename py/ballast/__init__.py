@@ -8,7 +8,7 @@ re-exports it. The YADE engines ``BallastCrushEngine`` and ``BallastAbrasionEngi
 ``import ballast`` works in a plain Python without YADE; the oedometric test is
 :mod:`ballast.oedometer`, the parameter studies :mod:`ballast.study`.
 """
-from ._ballast import (abrasionBound, abrasionCheck, contactModulus, crushCheck, effectiveRadius, fabricStress,
+from ._ballast import (abrasionBound, abrasionCheck, contactModulus, crushCheck, effectiveRadius, fabricStress, fatigueCheck,
                        fragmentPattern, grainStresses, hertzPressure, hertzPressureFromForce, keptVolumeFraction,
                        matricesToArray, patternName, placeFragments, principalStresses, randomRotation,
                        sizeStrength, sphereContactBound, vonMises)

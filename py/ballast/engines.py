@@ -16,6 +16,7 @@ After ``O.load()`` the engine is a plain PyRunner until it fires: then, or at on
 and its label points to it again.
 """
 import ast
+import base64
 import builtins
 import json
 import time
@@ -92,7 +93,11 @@ class _BallastEngine(PyRunner):
         if events:
             O.tags[_TAG + self._key + '.events'] = json.dumps(ev)
         O.tags[_TAG + self._key] = json.dumps(s)
-        O.tags[_TAG + self._key + '.checks'] = repr(tuple(s['outputs'][k] for k in self._perCheck))
+        self._saveChecks()
+
+    def _saveChecks(self):
+        """The outputs that change at every check (a short repr, not the whole state in JSON)."""
+        O.tags[_TAG + self._key + '.checks'] = repr(tuple(self.__dict__[k] for k in self._perCheck))
 
     def eventsArray(self):
         """events as a NumPy structured array (t, iter, id, x, y, z, radius, value, strength, nNew)."""
@@ -119,8 +124,8 @@ class _BallastEngine(PyRunner):
         d['checkSeconds'] += t1 - t0
         if changed:
             self._save()
-        else:  # only the per-check outputs changed: a short repr, not the whole state in JSON
-            O.tags[_TAG + self._key + '.checks'] = repr(tuple(d[k] for k in self._perCheck))
+        else:
+            self._saveChecks()
 
     def _event(self, kind, bid, pos, r, value, strength, newIds):
         self.events.append({'kind': kind, 't': O.time, 'iter': O.iter, 'id': bid, 'pos': [pos[0], pos[1], pos[2]],
@@ -145,13 +150,48 @@ class BallastCrushEngine(_BallastEngine):
         'volumeLost': (0.0, 'grain volume lost by crushing [m^3]'),
         'massLost': (0.0, 'grain mass lost by crushing [kg]'),
         'events': ([], 'one dict per crushed grain: kind, t [s], iter, id, pos [m], radius [m], value (sigma_e [Pa]), '
-                       'strength (f_t [Pa]), newIds'),
+                       'strength (f_t [Pa]; f_t (1 - D) with fatigue), newIds'),
         'nChecks': (0, 'checks run so far'),
         'checkSeconds': (0.0, 'wall time spent in checks, before the state is written to O.tags [s]'),
         'maxStressRatio': (0.0, 'largest sigma_e / f_t over the grains at the last check [-]'),
+        'nFatigueCrushed': (0, 'grains crushed below their undamaged strength (sigma_e <= f_t), by fatigue damage'),
+        'maxDamage': (0.0, 'largest fatigue damage D over the grains at the last check [-]'),
     }
 
-    _perCheck = ('nChecks', 'checkSeconds', 'maxStressRatio')  # outputs that change at every check
+    _perCheck = ('nChecks', 'checkSeconds', 'maxStressRatio', 'maxDamage')  # outputs that change at every check
+    FRESH = (0.0, 0.0, 1.0, 0.0)  # fatigue state of a new grain: damage, extreme, rising, peaks
+
+    def fatigueState(self, ids=None):
+        """Fatigue state by body id, an (n,4) array: damage D [-], running extreme of s [-], rising (1/0),
+        damaging peaks; rows of ids (default: every id up to the largest seen)."""
+        F = self.__dict__.get('_fatigue')
+        if F is None:
+            F = np.empty((0, 4))
+        if ids is None:
+            return F.copy()
+        ids = np.asarray(ids, dtype=np.int64)
+        out = np.tile(self.FRESH, (len(ids), 1))
+        known = ids < len(F)
+        out[known] = F[ids[known]]
+        return out
+
+    def _fatigueRows(self, ids):
+        """The state array, grown to hold every id (new rows fresh)."""
+        d = self.__dict__
+        F = d.get('_fatigue')
+        need = int(np.max(ids)) + 1 if len(ids) else 0
+        if F is None or len(F) < need:
+            G = np.tile(self.FRESH, (max(need, 2 * (0 if F is None else len(F))), 1))
+            if F is not None:
+                G[:len(F)] = F
+            d['_fatigue'] = F = G
+        return F
+
+    def _saveChecks(self):
+        _BallastEngine._saveChecks(self)
+        F = self.__dict__.get('_fatigue')
+        if F is not None:  # bitwise: base64 of the float64 array
+            O.tags[_TAG + self._key + '.fatigue'] = base64.b64encode(np.ascontiguousarray(F).tobytes()).decode('ascii')
 
     def _summary(self):
         return 'nCrushed=%d volumeLost=%.4g m^3 massLost=%.4g kg' % (self.nCrushed, self.volumeLost, self.massLost)
@@ -160,13 +200,25 @@ class BallastCrushEngine(_BallastEngine):
         if len(ids) == 0:
             return False
         se, ft, crush = _ballast.crushCheck(harvest.stresses(ids), radii, self.ft0, self.m, self.rMin)
-        self.__dict__['maxStressRatio'] = float(np.max(se / ft))
+        d = self.__dict__
+        d['maxStressRatio'] = float(np.max(se / ft))
+        strength = ft
+        if self.fatigue:  # docs/fatigue.md: a sample of s for every grain, crush when s > 1 - D
+            F = self._fatigueRows(ids)
+            F[ids], crush = _ballast.fatigueCheck(se / ft, radii, F[ids], self.fatigueExponent, self.fatigueEndurance,
+                                                  self.fatigueHysteresis, self.rMin)
+            strength = ft * (1 - F[ids, 0])
+            d['maxDamage'] = float(np.max(F[ids, 0]))
         hit = np.flatnonzero(crush)
         if len(hit) == 0:
             return False
         pw0 = self._dtBefore()
         for k in hit:
-            self._replace(tab, int(ids[k]), float(radii[k]), float(se[k]), float(ft[k]))
+            if se[k] <= ft[k]:
+                d['nFatigueCrushed'] += 1
+            newIds = self._replace(tab, int(ids[k]), float(radii[k]), float(se[k]), float(strength[k]))
+            if self.fatigue:  # fragments start undamaged (docs/fatigue.md)
+                self._fatigueRows(np.asarray(newIds))[newIds] = self.FRESH
         tab.commit()
         self._adjustDt(pw0)
         return True
@@ -194,6 +246,7 @@ class BallastCrushEngine(_BallastEngine):
         d['volumeLost'] += sphereVolume(r) - float(np.sum(sphereVolume(frags[:, 3])))
         d['massLost'] += mass - newMass
         self._event('crush', bid, pos, r, se, ft, newIds)
+        return newIds
 
 
 class BallastAbrasionEngine(_BallastEngine):
@@ -352,6 +405,8 @@ def _restoreKey(key):
         setattr(new, k, getattr(old, k))
     new.__dict__.update(s['outputs'])
     new.__dict__['_counter'] = s['counter']
+    if (tag + '.fatigue') in keys:
+        new.__dict__['_fatigue'] = np.frombuffer(base64.b64decode(O.tags[tag + '.fatigue']), dtype=float).reshape(-1, 4).copy()
     new._save()  # the constructor wrote an empty state over the loaded one
     engines[pos[0]] = new
     O.engines = engines

@@ -227,6 +227,18 @@ CRUSH = dict({
                      "'octa6' or 'fill14'"),
     'seed': Param(0, '-', 'seed of the random orientation of fragments (reproducible)', intNonNegative,
                   'an integer >= 0'),
+    # fatigue, beyond the paper (docs/fatigue.md): Basquin-Miner damage D on the peaks of s = sigma_e / f_t
+    'fatigue': Param(False, '-', 'fatigue: each grain accumulates damage D from the peaks of its stress ratio s '
+                     '= sigma_e / f_t and crushes when s > 1 - D (docs/fatigue.md); fragments start undamaged',
+                     boolean, 'True or False', flag),
+    'fatigueExponent': Param(30.0, '-', 'Basquin exponent b: a peak s_p >= fatigueEndurance adds s_p^b to D '
+                             '(alone, N_f = s_p^-b peaks to failure)', between(1, 100, closedHi=True),
+                             'a number in [1, 100]'),
+    'fatigueEndurance': Param(0.5, '-', 'endurance ratio: peaks of s below it do no damage', between(0, 1),
+                              'a number in [0, 1)'),
+    'fatigueHysteresis': Param(0.05, '-', 'a peak of s ends when s falls this much below it, and the next rise '
+                               'starts when s climbs this much above its minimum', between(0.001, 0.5, closedHi=True),
+                               'a number in [0.001, 0.5]'),
 }, **COMMON)
 
 ABRASION = dict({

@@ -89,6 +89,22 @@ def test_crush_check_threshold_and_rmin():
     assert crush.dtype == bool and list(crush) == [True, False, False]  # third is below rMin
 
 
+def test_fatigue_check_counts_a_peak_and_crushes_with_damage():
+    """Three grains, fresh state (0, 0, 1, 0), exponent 2, endurance 0.5, hysteresis 0.1.
+    Ratios 0.8, 0.4, 0.8 rise to their first sample; then 0.6, 0.25, 0.75: grain 0 fell 0.2 > 0.1 from
+    0.8, a peak: D = 0.8^2 = 0.64, and 0.6 > 1 - 0.64 crushes it; grain 1 fell 0.15 from 0.4 < endurance: a
+    reversal without damage; grain 2 fell 0.05 < 0.1: still rising, no peak."""
+    fresh = np.tile([0.0, 0.0, 1.0, 0.0], (3, 1))
+    r = [0.02, 0.02, 0.02]
+    st, crush = ballast.fatigueCheck([0.8, 0.4, 0.8], r, fresh, 2.0, 0.5, 0.1, 0.0)
+    np.testing.assert_array_equal(st, [[0, 0.8, 1, 0], [0, 0.4, 1, 0], [0, 0.8, 1, 0]])
+    assert crush.dtype == bool and not crush.any()
+    st, crush = ballast.fatigueCheck([0.6, 0.25, 0.75], r, st, 2.0, 0.5, 0.1, 0.0)
+    np.testing.assert_allclose(st, [[0.64, 0.6, 0, 1], [0, 0.25, 0, 0], [0, 0.8, 1, 0]], rtol=1e-15)
+    assert list(crush) == [True, False, False]
+    assert fresh[0, 2] == 1.0 and fresh[0, 0] == 0.0  # the input state is not changed in place
+
+
 def test_abrasion_check_max_over_contacts_both_sides():
     radii = np.array([0.02, 0.01])
     F, uN = np.array([1e3, 5e3, 2e3]), np.array([1e-5, 1e-5, 2e-5])
@@ -191,6 +207,10 @@ def test_place_fragments_reproducible_rotated_inside_parent():
     (lambda: ballast.grainStresses([1.0], [3], [[1, 0, 0]], [[1, 0, 0]]), ValueError, ['grainIndex', '3']),
     (lambda: ballast.crushCheck(np.zeros((2, 3, 3)), [1.0], 1.0, 1.0, 0.0), TypeError, ['stresses', '(1,3,3)']),
     (lambda: ballast.crushCheck(np.zeros((1, 3, 3)), [1.0], -2.0, 1.0, 0.0), ValueError, ['ft0', '-2']),
+    (lambda: ballast.fatigueCheck([0.5], [0.02], np.zeros((2, 4)), 2, 0.5, 0.1, 0), TypeError, ['state', '(1,4)']),
+    (lambda: ballast.fatigueCheck([0.5], [0.02], [[0, 0, 1, 0]], 2, 1.5, 0.1, 0), ValueError, ['endurance', '1.5']),
+    (lambda: ballast.fatigueCheck([-0.5], [0.02], [[0, 0, 1, 0]], 2, 0.5, 0.1, 0), ValueError, ['ratio', '-0.5']),
+    (lambda: ballast.fatigueCheck([0.5], [0.02], [[0, 0, 2, 0]], 2, 0.5, 0.1, 0), ValueError, ['state[0]']),
     (lambda: ballast.fragmentPattern(5), ValueError, ['pattern', '5']),
     (lambda: ballast.fragmentPattern('hex'), ValueError, ['pattern', 'hex']),
     (lambda: ballast.fragmentPattern(4.0), TypeError, ['pattern']),

@@ -18,6 +18,7 @@ import pytest
 yade = pytest.importorskip('yade')
 from ballast.oedometer import Oedometer  # noqa: E402
 from ballast.oedometer.loading import eq8  # noqa: E402
+from ballast.oedometer.outputs import CYCLE_COLUMNS  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 DIAMETER, HEIGHT, SEGMENTS = 0.15, 0.08, 48   # [m], [m], [-]
@@ -359,6 +360,32 @@ def test_three_cycles_write_cycles_csv(strong, root):
     assert os.path.getsize(os.path.join(run.out, 'cycles.png')) > 0
 
 
+def test_fatigue_crushes_grains_that_no_single_cycle_breaks(strong, root):
+    """The strong run's largest stress ratio s_max (checks.csv) scales with 1/ft0 while nothing crushes:
+    ft0 = 1e12 s_max / 0.7 puts the most loaded grain at s = 0.7 < 1 at the peak. With fatigue (b = 4,
+    endurance 0.3, hysteresis 0.05) that peak adds 0.7^4 = 0.24 to its damage, counted as s falls to
+    0.65 < 1 - 0.24: no crush in cycle 1, and the largest damage after it is (the largest ratio of its
+    checks)^4 exactly. A grain at 0.7 every cycle crushes in cycle floor(0.3 / 0.24) + 2 = 3, when s >
+    1 - 2 x 0.24: within four cycles some grain crushes, and every crush is below the undamaged strength."""
+    smax = np.loadtxt(os.path.join(strong[0].out, 'checks.csv'), delimiter=',', skiprows=1, ndmin=2)[:, 3].max()
+    run = Oedometer(f=F_STRONG, ft0=1e12 * smax / 0.7, strength=1e15, cycles=4, Fmin=0.2 * FMAX, fatigue=True,
+                    fatigueExponent=4, fatigueEndurance=0.3, fatigueHysteresis=0.05,
+                    results=os.path.join(root, 'fatigue'), runId='fatigue', packingDir=os.path.join(root, 'packings'),
+                    **SMALL)
+    s = run.run()
+    c = np.loadtxt(os.path.join(run.out, 'cycles.csv'), delimiter=',', skiprows=1, ndmin=2)
+    chk = np.loadtxt(os.path.join(run.out, 'checks.csv'), delimiter=',', skiprows=1, ndmin=2)
+    T = 1 / F_STRONG
+    s1 = chk[chk[:, 0] < T, 3].max()
+    assert s1 == pytest.approx(0.7, rel=0.02)          # the same first half cycle as the strong run
+    assert c[0, 4] == 0                                 # cycle 1: nothing crushed
+    assert c[0, 7] == pytest.approx(s1 ** 4, rel=1e-6)  # Miner's sum of the most loaded grain
+    assert s['nCrushed'] >= 1 and s['nFatigueCrushed'] == s['nCrushed']
+    with open(os.path.join(run.out, 'grains.csv')) as fh:
+        damage = [float(g['damage']) for g in csv.DictReader(fh)]
+    assert max(damage) > 0 and min(damage) >= 0
+
+
 RESUME_CYCLES = '''
 import sys
 from ballast.oedometer import Oedometer
@@ -385,7 +412,7 @@ def test_a_run_of_cycles_stopped_and_continued_in_a_fresh_process(strong, root, 
     out = os.path.join(root, 'continued', 'resumed')
     a = np.loadtxt(os.path.join(run.out, 'cycles.csv'), delimiter=',', skiprows=1, ndmin=2)
     b = np.loadtxt(os.path.join(out, 'cycles.csv'), delimiter=',', skiprows=1, ndmin=2)
-    assert b.shape == a.shape == (2, 7)
+    assert b.shape == a.shape == (2, len(CYCLE_COLUMNS))
     np.testing.assert_allclose(b[:, :2], a[:, :2], rtol=1e-9)
     np.testing.assert_allclose(b[:, 2:4], a[:, 2:4], rtol=0, atol=TOL_RESUME_CYCLES * s['deltaMax'])
     np.testing.assert_array_equal(b[:, 4:], a[:, 4:])

@@ -54,7 +54,7 @@ def test_vtu_and_pvd_read_back(tmp_path):
     table = {'id': np.array([4, 7, 9]), 'x': np.array([0.1, 0.2, 0.3]), 'y': np.zeros(n), 'z': np.array([1., 2., 3.]),
              'r': np.array([0.01, 0.02, 0.03]), 'mass': np.ones(n), 'generation': np.array([0, 1, 2]),
              'parent': np.array([-1, 4, 7]), 'nAbraded': np.zeros(n, dtype=int), 'stressRatio': np.array([0.5, 1.5, 0.1]),
-             'velocity': np.arange(9.).reshape(3, 3)}
+             'damage': np.array([0.0, 0.25, 0.125]), 'velocity': np.arange(9.).reshape(3, 3)}
     writeGrainsVtu(str(tmp_path / 'g.vtu'), table)
     piece = ET.parse(str(tmp_path / 'g.vtu')).getroot().find('./UnstructuredGrid/Piece')
     assert piece.get('NumberOfPoints') == '3' and piece.get('NumberOfCells') == '3'
@@ -65,6 +65,7 @@ def test_vtu_and_pvd_read_back(tmp_path):
         return np.array(piece.find("./PointData/DataArray[@Name='%s']" % name).text.split(), dtype=float)
     np.testing.assert_array_equal(field('parent'), table['parent'])
     np.testing.assert_array_equal(field('stressRatio'), table['stressRatio'])
+    np.testing.assert_array_equal(field('damage'), table['damage'])
     np.testing.assert_array_equal(field('velocity'), table['velocity'].ravel())
     writePvd(str(tmp_path / 'o.pvd'), [(0.0, 'g.vtu', 'w0.vtu'), (0.5, 'g1.vtu', 'w1.vtu')])
     ds = ET.parse(str(tmp_path / 'o.pvd')).getroot().findall('./Collection/DataSet')

@@ -187,8 +187,9 @@ class Oedometer:
             # the engine scales O.dt with the drop of PWaveTimeStep() after a replacement (eq. 5),
             # which keeps the dtSafety margin
             period = {'virtPeriod': p['Tc']} if p['Tc'] > 0 else {'iterPeriod': 1}
+            fatigue = {k: p[k] for k in ('fatigue', 'fatigueExponent', 'fatigueEndurance', 'fatigueHysteresis')}
             extra.append(BallastCrushEngine(ft0=p['ft0'], m=p['m'], pattern=p['pattern'], rMin=p['rMin'], seed=p['seed'],
-                                            mask=0, label='crush', **period))
+                                            mask=0, label='crush', **period, **fatigue))
         if p['abrasion']:
             extra.append(BallastAbrasionEngine(strength=p['strength'], gamma=p['gamma'], rMin=p['rMin'], mask=0,
                                                iterPeriod=p['abrasionPeriod'], label='abrasion'))
@@ -291,6 +292,7 @@ class Oedometer:
             'deltaFinal': float(a[-1, 2]),
             'nCrushed': self.counter('crush', 'nCrushed'),
             'nAbraded': self.counter('abrasion', 'nAbraded'),
+            'nFatigueCrushed': self.counter('crush', 'nFatigueCrushed'),
             'volumeLost': float(sum(e.volumeLost for e in engs)),
             'massInitial': self.initial['massInitial'],
             'massFinal': float(np.sum(m)),

@@ -15,9 +15,9 @@ from .callbacks import command
 
 FD_COLUMNS = ('t', 'F', 'delta', 'nCrushed', 'nAbraded', 'Fapplied')
 CHECK_COLUMNS = ('t', 'iter', 'nCrushed', 'maxStressRatio')
-CYCLE_COLUMNS = ('cycle', 't', 'settlement', 'resilient', 'nCrushed', 'nAbraded', 'Bg')
+CYCLE_COLUMNS = ('cycle', 't', 'settlement', 'resilient', 'nCrushed', 'nAbraded', 'Bg', 'maxDamage')
 EVENT_COLUMNS = ('kind', 't', 'iter', 'id', 'x', 'y', 'z', 'radius', 'value', 'strength', 'newIds')
-GRAIN_COLUMNS = ('id', 'x', 'y', 'z', 'r', 'mass', 'generation', 'parent', 'nAbraded', 'stressRatio')
+GRAIN_COLUMNS = ('id', 'x', 'y', 'z', 'r', 'mass', 'generation', 'parent', 'nAbraded', 'stressRatio', 'damage')
 
 # colours in the 3D view: original grains, fragments by generation (1, 2, 3+), abraded grains get bluer
 COLOR_ORIGINAL = (0.80, 0.75, 0.60)
@@ -147,7 +147,8 @@ class Outputs:
     def cycleEnd(self):
         """A row of cycles.csv: the cycle just ended, the permanent settlement (delta at the cycle's lowest
         force, its end), the resilient displacement (delta at its peak, T/2 before, minus that), the crushes
-        and abrasions in it and Marsal's B_g after it."""
+        and abrasions in it, Marsal's B_g after it and the largest fatigue damage D of a grain (0 without
+        fatigue)."""
         exp = self.exp
         t = O.time - exp.loading.t0
         k = int(round(t / exp.T))
@@ -157,12 +158,14 @@ class Outputs:
         settlement = exp.loading.delta()
         peak = float(np.interp((k - 0.5) * exp.T, a[:, 0], a[:, 2]))
         crushed, abraded = exp.counter('crush', 'nCrushed'), exp.counter('abrasion', 'nAbraded')
-        self.cycleRows.append((k, t, settlement, peak - settlement, crushed, abraded, grading.marsal(*exp.grading())))
+        self.cycleRows.append((k, t, settlement, peak - settlement, crushed, abraded, grading.marsal(*exp.grading()),
+                               exp.counter('crush', 'maxDamage')))
         with open(os.path.join(exp.out, 'cycles.csv'), 'w') as fh:
             fh.write(','.join(CYCLE_COLUMNS) + '\n')
             for i, row in enumerate(self.cycleRows):
                 prev = self.cycleRows[i - 1][4:6] if i else (0, 0)
-                fh.write('%d,%.9g,%.9g,%.9g,%d,%d,%.6g\n' % (row[:4] + (row[4] - prev[0], row[5] - prev[1], row[6])))
+                fh.write('%d,%.9g,%.9g,%.9g,%d,%d,%.6g,%.6g\n' % (tuple(row[:4]) + (row[4] - prev[0], row[5] - prev[1], row[6],
+                                                                        row[7] if len(row) > 7 else 0.0)))
 
     def logCheck(self):
         crush = self.exp.engine('crush')
@@ -194,7 +197,8 @@ class Outputs:
         g = self.grains
         g._grow(len(O.bodies))
         return {'id': ids, 'x': x[:, 0], 'y': x[:, 1], 'z': x[:, 2], 'r': r, 'mass': m, 'generation': g.generation[ids],
-                'parent': g.parent[ids], 'nAbraded': g.nAbraded[ids], 'stressRatio': ratio, 'velocity': v}
+                'parent': g.parent[ids], 'nAbraded': g.nAbraded[ids], 'stressRatio': ratio, 'velocity': v,
+                'damage': crush.fatigueState(ids)[:, 0] if crush is not None else np.zeros(len(ids))}
 
     # ------------------------------------------------------------------ VTK for ParaView
     def vtk(self):
@@ -227,7 +231,7 @@ class Outputs:
         with open(os.path.join(out, 'grains.csv'), 'w') as fh:
             fh.write(','.join(GRAIN_COLUMNS) + '\n')
             for k in range(len(table['id'])):
-                fh.write('%d,%.9g,%.9g,%.9g,%.9g,%.9g,%d,%d,%d,%.6g\n' % tuple(table[c][k] for c in GRAIN_COLUMNS))
+                fh.write('%d,%.9g,%.9g,%.9g,%.9g,%.9g,%d,%d,%d,%.6g,%.6g\n' % tuple(table[c][k] for c in GRAIN_COLUMNS))
         with open(os.path.join(out, 'summary.json'), 'w') as fh:
             json.dump(summary, fh, indent=1)
         self.plot(exp, events)
@@ -298,9 +302,9 @@ class Outputs:
                     label='crushing (%d)' % len(tc))
         ax.set_xlabel('plate displacement $\\delta$ [mm]')
         ax.set_ylabel('force F [kN]')
-        ax.set_title('oedometric test %s: seed %d, f = %g Hz, $T_c$ = %s, $f_{t0}$ = %g Pa m, pattern %s\n%s law, %s load' % (
+        ax.set_title('oedometric test %s: seed %d, f = %g Hz, $T_c$ = %s, $f_{t0}$ = %g Pa m, pattern %s\n%s law, %s load%s' % (
             exp.runId, p['seed'], p['f'], ('%g s' % p['Tc']) if p['Tc'] > 0 else 'every step', p['ft0'], p['pattern'],
-            p['law'], p['loadMode']), fontsize=8)
+            p['law'], p['loadMode'], (', fatigue b = %g' % p['fatigueExponent']) if p['fatigue'] else ''), fontsize=8)
         ax.grid(alpha=0.3)
         ax.legend(fontsize=8, loc='upper left')
         t = np.linspace(0, a[-1, 0], 400)
@@ -337,7 +341,7 @@ def writeGrainsVtu(path, table):
     """The grains as vertices with their state (ParaView: Glyph, sphere, scaled by radius)."""
     n = len(table['id'])
     data = ''.join(_array(c, table[c], 1, 'Int64' if c in ('id', 'generation', 'parent', 'nAbraded') else 'Float64')
-                   for c in ('id', 'r', 'mass', 'generation', 'parent', 'nAbraded', 'stressRatio'))
+                   for c in ('id', 'r', 'mass', 'generation', 'parent', 'nAbraded', 'stressRatio', 'damage'))
     data += _array('velocity', table['velocity'], 3)
     points = np.column_stack([table['x'], table['y'], table['z']]) if n else np.zeros((0, 3))
     _unstructured(path, points, np.arange(n), np.arange(1, n + 1), np.ones(n, dtype=int), data)

@@ -1,0 +1,40 @@
+// Fatigue of grains under repeated loading, beyond the paper (docs/fatigue.md): Basquin's S-N law
+// with Miner's rule, counted on the peaks of each grain's stress ratio s = sigma_e / f_t (eqs. 1-4).
+//   a peak s_p >= endurance adds  D += s_p^b   (a cycle at s_p alone fails after N_f = s_p^-b cycles)
+//   the strength falls with D:    crush  <=>  r >= rMin  and  s > 1 - D   (eq. 1 with f_t (1 - D))
+// Peaks are load reversals: a peak is counted when s falls `hysteresis` below its running maximum,
+// the next rise starts when s climbs `hysteresis` above its running minimum. Counting load cycles,
+// not checks, keeps the law independent of T_c as long as the checks sample the peaks.
+// No YADE here.
+#pragma once
+
+namespace ballast {
+
+struct FatigueParameters {
+	double exponent;    // Basquin exponent b [-], > 0
+	double endurance;   // peaks below this ratio do no damage [-], in [0, 1)
+	double hysteresis;  // fall (and rise) of s that ends a peak (a valley) [-], in (0, 1)
+	void   validate() const;
+};
+
+// Per-grain state, four doubles a grain (row-major (n,4) in the binding and the saved engine state).
+struct GrainFatigue {
+	double damage  = 0;  // Miner's sum D [-]
+	double extreme = 0;  // running maximum of s while rising, minimum while falling [-]
+	double rising  = 1;  // 1 while s climbs towards a peak, 0 while it falls towards a valley
+	double peaks   = 0;  // peaks that did damage [-]
+};
+static_assert(sizeof(GrainFatigue) == 4 * sizeof(double), "GrainFatigue is read as an (n,4) array of doubles");
+
+// One sample s of a grain: counts a peak if s ends one (D += peak^b when peak >= endurance).
+void sampleFatigue(const FatigueParameters& p, double s, GrainFatigue& g);
+
+// Whether a grain of damage D crushes at ratio s: s > 1 - D.
+inline bool crushesWithDamage(double s, double damage) { return s > 1.0 - damage; }
+
+// For n grains: ratio [-] (finite, >= 0) and radius [m] (> 0) of each; updates state[n] with the
+// sample, then writes crush (0/1): r >= rMin and s > 1 - D.
+void evaluateFatigue(const FatigueParameters& p, double rMin, long n, const double* ratio, const double* radii,
+                     GrainFatigue* state, unsigned char* crush);
+
+}  // namespace ballast

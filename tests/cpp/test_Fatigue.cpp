@@ -1,0 +1,139 @@
+// Tests of the fatigue law (Fatigue.hpp): Basquin-Miner damage counted on the peaks of the stress
+// ratio s, crush when s > 1 - D. Expected cycles are worked out by hand in the comments.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "Fatigue.hpp"
+#include "InputCheck.hpp"
+
+using namespace ballast;
+
+namespace {
+
+const double kPi = std::acos(-1.0);
+
+// The load cycle in which a grain driven by s(t) = sPeak (1 - cos 2 pi t) / 2, sampled `perCycle`
+// times per cycle (at t = k / perCycle), first crushes; 0 if not within maxCycles.
+long crushCycle(const FatigueParameters& p, double sPeak, int perCycle, long maxCycles, GrainFatigue& g)
+{
+	const double r = 0.02;
+	for (long c = 1; c <= maxCycles; ++c)
+		for (int k = 0; k < perCycle; ++k) {
+			const double  s = sPeak * (1 - std::cos(2 * kPi * k / perCycle)) / 2;
+			unsigned char crush;
+			evaluateFatigue(p, 0.0, 1, &s, &r, &g, &crush);
+			if (crush) return c;
+		}
+	return 0;
+}
+
+std::string messageOf(const FatigueParameters& p)
+{
+	try {
+		p.validate();
+	} catch (const ArgumentError& e) {
+		return e.what();
+	}
+	return "";
+}
+
+}  // namespace
+
+TEST(Fatigue, ConstantRatioCrushesInTheCycleWorkedOutByHand)
+{
+	// s_p = 0.6, b = 8: each peak adds 0.6^8 = 0.01679616. The grain crushes once s > 1 - D, i.e. once
+	// D > 0.4: after k* = floor(0.4 / 0.01679616) + 1 = floor(23.815) + 1 = 24 peaks, counted as s falls
+	// in cycle 24; in cycle 25 s rises past 1 - D = 0.597 and the grain crushes (never in one cycle:
+	// 0.6 < 1).
+	const FatigueParameters p{8.0, 0.5, 0.05};
+	GrainFatigue            g;
+	EXPECT_EQ(crushCycle(p, 0.6, 100, 1000, g), 25);
+	EXPECT_EQ(g.peaks, 24);
+	EXPECT_NEAR(g.damage, 24 * std::pow(0.6, 8), 1e-14);
+}
+
+TEST(Fatigue, CountsLoadCyclesNotChecks)
+{
+	// Any even number of samples per cycle hits the peak: 4, 8 or 1000 checks a cycle, the same cycle 25.
+	const FatigueParameters p{8.0, 0.5, 0.05};
+	for (int perCycle : {4, 8, 1000}) {
+		GrainFatigue g;
+		EXPECT_EQ(crushCycle(p, 0.6, perCycle, 1000, g), 25) << perCycle;
+	}
+	// 7 samples miss the peak: the largest sample is s_m = 0.6 (1 - cos(6 pi / 7)) / 2 = 0.57029; it is
+	// what counts: crush in cycle floor((1 - s_m) / s_m^8) + 2 (the sample s_m exceeds 1 - D first then).
+	const double sm = 0.6 * (1 - std::cos(6 * kPi / 7)) / 2;
+	GrainFatigue g;
+	EXPECT_EQ(crushCycle(p, 0.6, 7, 1000, g), static_cast<long>(std::floor((1 - sm) / std::pow(sm, 8))) + 2);
+}
+
+TEST(Fatigue, BelowTheEnduranceRatioNoDamage)
+{
+	const FatigueParameters p{8.0, 0.5, 0.05};
+	GrainFatigue            g;
+	EXPECT_EQ(crushCycle(p, 0.49, 50, 5000, g), 0);
+	EXPECT_EQ(g.damage, 0.0);
+	EXPECT_EQ(g.peaks, 0.0);
+}
+
+TEST(Fatigue, RipplesSmallerThanTheHysteresisAreNotCycles)
+{
+	// s ripples between 0.8 and 0.78 (a fall of 0.02 < 0.05) a thousand times, then falls to 0: one peak.
+	const FatigueParameters p{4.0, 0.5, 0.05};
+	GrainFatigue            g;
+	for (int k = 0; k < 1000; ++k) {
+		sampleFatigue(p, 0.8, g);
+		sampleFatigue(p, 0.78, g);
+	}
+	EXPECT_EQ(g.peaks, 0.0);
+	sampleFatigue(p, 0.0, g);
+	EXPECT_EQ(g.peaks, 1.0);
+	EXPECT_NEAR(g.damage, std::pow(0.8, 4), 1e-15);  // 0.4096
+	// a fall that ends a peak needs a rise of more than the hysteresis before the next peak
+	sampleFatigue(p, 0.04, g);
+	sampleFatigue(p, 0.8, g);  // rises by 0.8 from the valley 0: rising again
+	sampleFatigue(p, 0.7, g);  // falls by 0.1: a second peak of 0.8
+	EXPECT_EQ(g.peaks, 2.0);
+	EXPECT_NEAR(g.damage, 2 * std::pow(0.8, 4), 1e-15);
+}
+
+TEST(Fatigue, CrushRule)
+{
+	EXPECT_TRUE(crushesWithDamage(1.01, 0.0));   // eq. 1 unchanged for an undamaged grain
+	EXPECT_FALSE(crushesWithDamage(0.99, 0.0));
+	EXPECT_FALSE(crushesWithDamage(0.5, 0.5));   // s = 1 - D: not above
+	EXPECT_TRUE(crushesWithDamage(0.51, 0.5));
+	// rMin: a damaged grain below rMin never crushes
+	const FatigueParameters p{8.0, 0.5, 0.05};
+	GrainFatigue            g;
+	g.damage = 0.9;
+	const double  s = 0.5, r = 0.005;
+	unsigned char crush;
+	evaluateFatigue(p, 0.01, 1, &s, &r, &g, &crush);
+	EXPECT_EQ(crush, 0);
+	evaluateFatigue(p, 0.0, 1, &s, &r, &g, &crush);
+	EXPECT_EQ(crush, 1);
+}
+
+TEST(Fatigue, BadInputNamesTheArgument)
+{
+	EXPECT_NE(messageOf({0.0, 0.5, 0.05}).find("exponent"), std::string::npos);
+	EXPECT_NE(messageOf({8.0, 1.0, 0.05}).find("endurance: expected a ratio in [0, 1), got 1"), std::string::npos);
+	EXPECT_NE(messageOf({8.0, 0.5, 1.5}).find("hysteresis: expected a ratio in (0, 1), got 1.5"), std::string::npos);
+	EXPECT_NE(messageOf({NAN, 0.5, 0.05}).find("exponent"), std::string::npos);
+	const FatigueParameters p{8.0, 0.5, 0.05};
+	GrainFatigue            g;
+	unsigned char           crush;
+	const double            r = 0.02, bad = -0.1;
+	EXPECT_THROW(evaluateFatigue(p, 0.0, 1, &bad, &r, &g, &crush), ArgumentError);
+	g.damage = -1;
+	const double s = 0.5;
+	try {
+		evaluateFatigue(p, 0.0, 1, &s, &r, &g, &crush);
+		ADD_FAILURE() << "no error for a negative damage";
+	} catch (const ArgumentError& e) {
+		EXPECT_NE(std::string(e.what()).find("state[0]"), std::string::npos) << e.what();
+	}
+}
