@@ -10,6 +10,7 @@
 
 #include "BallastCrushEngine.hpp"
 #include "FabricStress.hpp"
+#include "ArgumentMessage.hpp"
 #include "InputCheck.hpp"
 
 using namespace ballast;
@@ -33,12 +34,7 @@ double forceFor(double target, double r) { return target * 2.0 * kPi * r * r / 3
 
 std::string messageOf(const CrushParameters& p)
 {
-	try {
-		p.validate();
-	} catch (const ArgumentError& e) {
-		return e.what();
-	}
-	return "";
+	return ballast_test::messageOf([&] { p.validate(); });
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "Fatigue.hpp"
+#include "ArgumentMessage.hpp"
 #include "InputCheck.hpp"
 
 using namespace ballast;
@@ -31,12 +32,7 @@ long crushCycle(const FatigueParameters& p, double sPeak, int perCycle, long max
 
 std::string messageOf(const FatigueParameters& p)
 {
-	try {
-		p.validate();
-	} catch (const ArgumentError& e) {
-		return e.what();
-	}
-	return "";
+	return ballast_test::messageOf([&] { p.validate(); });
 }
 
 }  // namespace
