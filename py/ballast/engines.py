@@ -27,7 +27,7 @@ from yade import O, utils
 from yade import Vector3
 from yade.wrapper import PyRunner
 
-from . import _ballast, harvest
+from . import _ballast, contacts, harvest
 from .geometry import sphereVolume
 from .params import ABRASION, CRUSH, docTable, validate, validateAll
 
@@ -347,8 +347,10 @@ class BallastAbrasionEngine(_BallastEngine):
             bid, r = int(ids[k]), float(radii[k])
             st = O.bodies[bid].state
             mass, pos = st.mass, st.pos
-            # radius, mass (g^3), inertia (g^5) and the contacts' refR together: bodyStressTensors reads refR
+            # radius, mass (g^3), inertia (g^5) and the grain's refR together (bodyStressTensors reads refR),
+            # then its contacts as YADE would create them at the new radius (stiffness, the partner's refR)
             utils.growParticle(bid, g, True)
+            contacts.resize(bid, r, g * r)
             tab.resized(bid, g * r)
             d = self.__dict__
             d['nAbraded'] += 1

@@ -406,6 +406,33 @@ def test_prefilter_gives_the_same_abrasion_and_reads_fewer_contacts():
     assert fast.contactsRead < 0.6 * full.contactsRead   # a full read at check 1 (verification), then few
 
 
+@pytest.mark.parametrize('law', ['hertz', 'linear'])
+@pytest.mark.parametrize('resized', [True, False])
+def test_prefilter_bound_holds_through_repeated_abrasion(monkeypatch, resized, law):
+    """An abrasion-heavy Hertz packing pressed by 200 g (grains settle back into load within a few
+    steps after each abrasion and abrade again), three quarters of the grains above the strength, gamma =
+    0.95, a check every 10 steps, each one a full read that verifies every grain's bound. With the
+    contacts resized (ballast.contacts) the bound holds at every check; with YADE's growParticle alone
+    the stale stiffness pushes eq. 7 above it (the audit of issue 15: 7 runs of 7). Under the linear law
+    the bound is eq. 7's constant 3 E / pi, which a stale kn = 2 E r_old / 2 exceeds at once."""
+    if not resized:
+        monkeypatch.setattr(ballast.contacts, 'resize', lambda *a: 0)
+    packedBox(**({} if law == 'hertz' else dict(E=LINEAR_E, engines=linearEngines())))
+    newton = [e for e in O.engines if type(e).__name__ == 'NewtonIntegrator'][0]
+    newton.gravity = (0, 0, -200 * 9.81)
+    O.run(2000, True)
+    _, p0 = fullPressures()
+    ab = add(BallastAbrasionEngine(strength=float(np.quantile(p0[p0 > 0], 0.25)), gamma=0.95, iterPeriod=10,
+                                   verifyPeriod=1, label='abrasion'))
+    O.run(3000, True)
+    assert ab.nAbraded > len(p0)  # grains abraded again and again
+    if resized:
+        assert not ab.prefilterNote.startswith('bound broken'), ab.prefilterNote
+        assert ab.prefilterActive and ab.nVerified > 0.9 * ab.nChecks
+    else:
+        assert ab.prefilterNote.startswith('bound broken')
+
+
 def assertPrefilterOffWithSameAbrasion(noteWords):
     """From the current scene: the prefilter must be off with a note containing noteWords, and the
     events must be those of a check without it, with some grains abraded."""
