@@ -29,17 +29,25 @@ from yade.wrapper import PyRunner
 
 from . import _ballast, contacts, harvest
 from .geometry import sphereVolume
-from .params import ABRASION, CRUSH, docTable, validate, validateAll
+from .params import ABRASION, CRUSH, PERIODIC, ParamError, docTable, validate, validateAll
 
-# PyRunner's (PeriodicEngine's) own settings, passed through unchanged.
-_PERIODIC = ('iterPeriod', 'virtPeriod', 'realPeriod', 'nDo', 'initRun', 'dead', 'label', 'firstIterRun',
-             'ompThreads')
+# PyRunner's (PeriodicEngine's) own settings are checked as parameters (params.PERIODIC); its counters
+# are set only when an engine is restored
+_PERIODS = ('iterPeriod', 'virtPeriod', 'realPeriod')
 _PERIODIC_STATE = ('iterLast', 'virtLast', 'realLast', 'nDone')
 _TAG = 'ballast.'
 _COMMAND = "import ballast.engines as _be; _be._fire(%r)"
 
 _BROKEN = 'bound broken'  # start of prefilterNote once a full read broke the prefilter's bound
 _live = {}      # key -> engine instance created in this process
+
+
+def _requireAPeriod(owner, periods):
+    """A PeriodicEngine whose periods are all 0 never runs: refuse it."""
+    if not any(v > 0 for v in periods.values()):
+        raise ParamError('iterPeriod', '%s: %s is not allowed: the engine would never check; give iterPeriod >= 1, '
+                         'virtPeriod > 0 [s] or realPeriod > 0 [s]' % (owner, ', '.join(
+                             '%s = %r' % kv for kv in periods.items())))
 _classes = {}   # class name -> class, for restoring
 
 
@@ -52,38 +60,55 @@ class _BallastEngine(PyRunner):
         key = kw.pop('_key', None) or uuid.uuid4().hex[:12]
         if 'command' in kw:
             raise TypeError('%s: command is set by the engine itself and cannot be given' % name)
-        periodic = {k: kw.pop(k) for k in list(kw) if k in _PERIODIC}
+        periodic = {k: validate(name, PERIODIC, k, kw.pop(k)) for k in list(kw) if k in PERIODIC}
         unknown = sorted(k for k in kw if k not in self._params)
         if unknown:
             raise TypeError('%s: unknown parameter(s) %s; parameters: %s; periodic settings: %s'
-                            % (name, ', '.join(unknown), ', '.join(self._params), ', '.join(_PERIODIC)))
+                            % (name, ', '.join(unknown), ', '.join(self._params), ', '.join(PERIODIC)))
+        if not any(k in periodic for k in _PERIODS):
+            periodic['iterPeriod'] = 1  # no period given: a check every step (the paper's T_c = 0)
+        _requireAPeriod(name, {k: periodic.get(k, 0) for k in _PERIODS})
         values = validateAll(name, self._params, kw)
         PyRunner.__init__(self, command=_COMMAND % key, **periodic)
         self.__dict__.update(values)
         self.__dict__['_key'] = key
         for k, (v, _) in self._outputs.items():
-            self.__dict__[k] = list(v) if isinstance(v, list) else v
+            self.__dict__['_events' if k == 'events' else k] = list(v) if isinstance(v, list) else v
         self.__dict__['_counter'] = 0
         _live[key] = self
         self._save()
 
+    @property
+    def events(self):
+        """The events so far (a copy: outputs are changed by the engine only)."""
+        return [dict(e, pos=list(e['pos']), newIds=list(e['newIds'])) for e in self.__dict__['_events']]
+
     def __setattr__(self, name, value):
+        owner = type(self).__name__
         if name in self._params:
-            self.__dict__[name] = validate(type(self).__name__, self._params, name, value)
+            self.__dict__[name] = validate(owner, self._params, name, value)
             self._save()
         elif name == 'command' and '_key' in self.__dict__:
-            raise AttributeError('%s: command is set by the engine itself' % type(self).__name__)
+            raise AttributeError('%s: command is set by the engine itself' % owner)
         elif name in self._outputs:
-            raise AttributeError('%s: %s is an output, updated at run time' % (type(self).__name__, name))
-        else:
+            raise AttributeError('%s: %s is an output, updated at run time' % (owner, name))
+        elif name in PERIODIC:
+            value = validate(owner, PERIODIC, name, value)
+            if name in _PERIODS:
+                _requireAPeriod(owner, dict({k: getattr(self, k) for k in _PERIODS}, **{name: value}))
             PyRunner.__setattr__(self, name, value)
+        elif name in _PERIODIC_STATE:
+            PyRunner.__setattr__(self, name, value)
+        else:
+            raise AttributeError('%s: no attribute %r to set; parameters: %s; periodic settings: %s'
+                                 % (owner, name, ', '.join(self._params), ', '.join(PERIODIC)))
 
     # ---------------------------------------------------------------- state
     def state(self):
         """Parameters and outputs as a JSON-able dict (what O.save keeps in O.tags)."""
         s = {'class': type(self).__name__, 'key': self._key, 'counter': self._counter}
         s['params'] = {k: self.__dict__[k] for k in self._params}
-        s['outputs'] = {k: self.__dict__[k] for k in self._outputs}
+        s['outputs'] = {k: self.__dict__['_events' if k == 'events' else k] for k in self._outputs}
         return s
 
     def _save(self, events=True):
@@ -104,7 +129,7 @@ class _BallastEngine(PyRunner):
         dt = [('t', float), ('iter', np.int64), ('id', np.int64), ('x', float), ('y', float), ('z', float),
               ('radius', float), ('value', float), ('strength', float), ('nNew', np.int64)]
         return np.array([(e['t'], e['iter'], e['id'], *e['pos'], e['radius'], e['value'], e['strength'],
-                          len(e['newIds'])) for e in self.events], dtype=dt)
+                          len(e['newIds'])) for e in self.__dict__['_events']], dtype=dt)
 
     def __str__(self):
         p = ', '.join('%s=%r' % (k, self.__dict__[k]) for k in self._params)
@@ -128,7 +153,7 @@ class _BallastEngine(PyRunner):
             self._saveChecks()
 
     def _event(self, kind, bid, pos, r, value, strength, newIds):
-        self.events.append({'kind': kind, 't': O.time, 'iter': O.iter, 'id': bid, 'pos': [pos[0], pos[1], pos[2]],
+        self.__dict__['_events'].append({'kind': kind, 't': O.time, 'iter': O.iter, 'id': bid, 'pos': [pos[0], pos[1], pos[2]],
                             'radius': r, 'value': value, 'strength': strength, 'newIds': newIds})
 
     def _adjustDt(self, pw0):
@@ -401,10 +426,11 @@ def _restoreKey(key):
     if not pos:
         raise RuntimeError('ballast: no engine in O.engines runs the command of %r' % key)
     old = engines[pos[0]]
-    periodic = {k: getattr(old, k) for k in _PERIODIC}
+    periodic = {k: getattr(old, k) for k in PERIODIC}
     new = _classes[s['class']](_key=key, **dict(s['params'], **periodic))
     for k in _PERIODIC_STATE:
         setattr(new, k, getattr(old, k))
+    s['outputs']['_events'] = s['outputs'].pop('events')
     new.__dict__.update(s['outputs'])
     new.__dict__['_counter'] = s['counter']
     if (tag + '.fatigue') in keys:

@@ -8,6 +8,7 @@ This module needs no YADE: the study runner reads the declarations in plain ``/u
 import ast
 import math
 import numbers
+import os
 
 from . import _ballast
 
@@ -127,6 +128,19 @@ def intNonNegative(v):
     return v
 
 
+def intBetween(lo, hi):
+    """A check for an integer lo <= v <= hi (the range the code below can represent)."""
+    def check(v):
+        v = _integer(v)
+        if not lo <= v <= hi:
+            raise ValueError
+        return v
+    return check
+
+
+INT64_MAX, INT32_MAX = 2 ** 63 - 1, 2 ** 31 - 1
+
+
 def positiveInt(v):
     v = _integer(v)
     if v < 1:
@@ -178,6 +192,20 @@ def choice(*names):
     return check
 
 
+def requireWritableDir(owner, name, path):
+    """Creates the folder `path` of parameter `name` if needed and writes a probe file in it, so that a run
+    fails before its work, not after it, when its results could not be stored. Raises ParamError."""
+    probe = os.path.join(path, '.ballast-probe-%d' % os.getpid())
+    try:
+        os.makedirs(path, exist_ok=True)
+        with open(probe, 'w') as fh:
+            fh.write('probe\n')
+        os.remove(probe)
+    except OSError as e:
+        raise ParamError(name, '%s: %s = %r is not allowed: expected a folder that can be created and written to (%s)'
+                         % (owner, name, path, e.strerror or e)) from None
+
+
 def validate(owner, table, name, value, text=False):
     """Checked value of parameter `name`, or a ParamError naming the owner, parameter, value and range.
     text=True: a string value is text from a command line or a table, read by the parameter's parse;
@@ -213,20 +241,42 @@ NUMBER_POSITIVE, NUMBER_NONNEGATIVE = 'a finite number > 0', 'a finite number >=
 COMMON = {
     'rMin': Param(0.0, 'm', 'grains with a radius below rMin never degrade (fragments included)',
                   nonNegative, NUMBER_NONNEGATIVE),
-    'mask': Param(0, '-', 'groupMask selecting the checked grains (dynamic spheres); 0 = all', anyInt, 'an integer'),
+    'mask': Param(0, '-', 'groupMask selecting the checked grains (dynamic spheres); 0 = all', intBetween(0, INT32_MAX),
+                  'an integer in [0, 2^31 - 1] (a YADE groupMask)'),
     'adjustDt': Param(True, '-', 'after grains shrink, scale O.dt by the drop of utils.PWaveTimeStep() '
                       '(eq. 5: dt_cr ~ r sqrt(rho/E)); skipped while a time stepper is active',
                       boolean, 'True or False', flag),
 }
 
+# PyRunner's (YADE PeriodicEngine's) own settings, checked as the engines' parameters are: a negative or
+# NaN period switches a PeriodicEngine off without a word
+PERIODIC = {
+    'iterPeriod': Param(0, 'steps', 'check every iterPeriod steps (0 = not by steps)', intBetween(0, INT64_MAX),
+                        'an integer in [0, 2^63 - 1]'),
+    'virtPeriod': Param(0.0, 's', 'check every virtPeriod of simulated time (the paper\'s T_c; 0 = not by time)',
+                        nonNegative, NUMBER_NONNEGATIVE),
+    'realPeriod': Param(0.0, 's', 'check every realPeriod of wall-clock time (0 = not by wall time)', nonNegative,
+                        NUMBER_NONNEGATIVE),
+    'nDo': Param(-1, '-', 'number of checks to run (-1 = no limit)', intBetween(-1, INT64_MAX),
+                 'an integer in [-1, 2^63 - 1]'),
+    'initRun': Param(False, '-', 'also check at the first step', boolean, 'True or False', flag),
+    'dead': Param(False, '-', 'switched off', boolean, 'True or False', flag),
+    'label': Param('', '-', 'name of the engine in the yade namespace', anyText, 'a name'),
+    'firstIterRun': Param(0, 'steps', 'first step a check may run at', intBetween(0, INT64_MAX),
+                          'an integer in [0, 2^63 - 1]'),
+    'ompThreads': Param(-1, '-', 'OpenMP threads of the engine (-1 = YADE\'s)', intBetween(-1, 1024),
+                        'an integer in [-1, 1024]'),
+}
+
 CRUSH = dict({
     'ft0': Param(None, 'Pa m^m', 'reference strength f_t0 of eq. 4, f_t = ft0 / r^m', positive, NUMBER_POSITIVE),
-    'm': Param(1.0, '-', 'size-effect exponent of eq. 4 (the paper: 1)', nonNegative, NUMBER_NONNEGATIVE),
+    'm': Param(1.0, '-', 'size-effect exponent of eq. 4 (the paper: 1; 3 / m is the Weibull modulus of the size '
+               'effect, 1 at m = 3)', between(0, 3, closedHi=True), 'a number in [0, 3]'),
     'pattern': Param(6, '-', 'fragment layout (Fig. 1): 4 (tetrahedral), 6 (octahedral), 14, or planar4 '
                      '(four in a plane, the paper\'s 70 % loss)', pattern, "4, 6, 14, 'tetra4', 'planar4', "
                      "'octa6' or 'fill14'"),
-    'seed': Param(0, '-', 'seed of the random orientation of fragments (reproducible)', intNonNegative,
-                  'an integer >= 0'),
+    'seed': Param(0, '-', 'seed of the random orientation of fragments (reproducible)', intBetween(0, INT64_MAX),
+                  'an integer in [0, 2^63 - 1]'),
     # fatigue, beyond the paper (docs/fatigue.md): Basquin-Miner damage D on the peaks of s = sigma_e / f_t
     'fatigue': Param(False, '-', 'fatigue: each grain accumulates damage D from the peaks of its stress ratio s '
                      '= sigma_e / f_t and crushes when s > 1 - D (docs/fatigue.md); fragments start undamaged',
@@ -244,7 +294,8 @@ CRUSH = dict({
 ABRASION = dict({
     'strength': Param(None, 'Pa', 'contact pressure that abrades a grain (eq. 6 compares the maximum Hertz '
                       'pressure p0 of eq. 7 with it; kept apart from ft0, which is in Pa m)', positive, NUMBER_POSITIVE),
-    'gamma': Param(0.9, '-', 'radius reduction factor: r_new = gamma r_old', openUnit, 'a number in (0, 1)'),
+    'gamma': Param(0.9, '-', 'radius reduction factor: r_new = gamma r_old (an abrasion removes a surface layer, '
+                   'at most half the radius)', between(0.5, 1), 'a number in [0.5, 1)'),
     'prefilter': Param(True, '-', 'read only the contacts of grains whose bound on p0 exceeds the strength (same '
                        'decisions). Hertz-Mindlin contacts: a fabric-stress bound (ballast.abrasionBound) and one from '
                        'the largest overlap ratio; linear contacts (FrictPhys): eq. 7 is 3 kn / (2 pi R), a constant '

@@ -197,7 +197,17 @@ def test_crushing_period_is_honoured():
     (BallastCrushEngine, dict(ft0='1e5'), ['ft0', "'1e5'"]),
     (BallastCrushEngine, dict(), ['ft0', 'required']),
     (BallastCrushEngine, dict(ft0=1.0, ft=2.0), ['unknown', 'ft']),
-    (BallastAbrasionEngine, dict(strength=1.0, gamma=1.0), ['BallastAbrasionEngine', 'gamma', '1.0', '(0, 1)']),
+    (BallastAbrasionEngine, dict(strength=1.0, gamma=1.0), ['BallastAbrasionEngine', 'gamma', '1.0', '[0.5, 1)']),
+    # issue 15's audit: accepted and silently wrong, or failing at the first event
+    (BallastCrushEngine, dict(ft0=1.0, iterPeriod=-5), ['iterPeriod', '-5', '[0, 2^63 - 1]']),
+    (BallastCrushEngine, dict(ft0=1.0, virtPeriod=float('nan')), ['virtPeriod', 'nan', '>= 0']),
+    (BallastCrushEngine, dict(ft0=1.0, virtPeriod=-1.0), ['virtPeriod', '-1.0']),
+    (BallastCrushEngine, dict(ft0=1.0, iterPeriod=0, virtPeriod=0.0), ['iterPeriod', 'never check']),
+    (BallastCrushEngine, dict(ft0=1.0, iterPeriod='x'), ['iterPeriod', "'x'"]),
+    (BallastCrushEngine, dict(ft0=1.0, seed=2 ** 64), ['seed', '2^63 - 1']),
+    (BallastCrushEngine, dict(ft0=1.0, m=1e5), ['m', '100000.0', '[0, 3]']),
+    (BallastCrushEngine, dict(ft0=1.0, mask=2 ** 40), ['mask', '2^31 - 1']),
+    (BallastAbrasionEngine, dict(strength=1.0, gamma=1e-300), ['gamma', '1e-300', '[0.5, 1)']),
     (BallastAbrasionEngine, dict(strength=1.0, gamma=0.0), ['gamma', '0.0']),
     (BallastAbrasionEngine, dict(strength=0.0), ['strength', '0.0']),
     (BallastAbrasionEngine, dict(strength=1.0, adjustDt=1), ['adjustDt', 'True or False']),
@@ -219,6 +229,30 @@ def test_bad_parameter_set_later_raises_and_keeps_old_value():
     assert c.ft0 == 1.0
     with pytest.raises(AttributeError, match='output'):
         c.nCrushed = 3
+    # periodic settings are checked on every set too; the last period cannot go to 0
+    assert c.iterPeriod == 1  # no period given: a check every step
+    with pytest.raises(ValueError, match='virtPeriod = -1'):
+        c.virtPeriod = -1
+    with pytest.raises(ValueError, match='never check'):
+        c.iterPeriod = 0
+    c.virtPeriod = 1e-4
+    c.iterPeriod = 0       # allowed now: the engine checks by time
+    assert (c.iterPeriod, c.virtPeriod) == (0, 1e-4)
+    # a misspelt name is refused, not silently added
+    with pytest.raises(AttributeError, match="no attribute 'ft0x'"):
+        c.ft0x = 1
+    assert not hasattr(c, 'ft0x')
+
+
+def test_outputs_cannot_be_changed_from_outside():
+    g, w1, F, arm, uN = loadedGrain()
+    crush = add(BallastCrushEngine(ft0=squeezedStress(F, R, arm) * R / 1.5, iterPeriod=1, label='crush'))
+    O.run(2, True)
+    assert crush.nCrushed == 1
+    crush.events.append({'kind': 'fake'})
+    crush.events[0]['radius'] = -1.0
+    crush.events[0]['newIds'].append(10 ** 6)
+    assert len(crush.events) == 1 and crush.events[0]['radius'] == R and 10 ** 6 not in crush.events[0]['newIds']
 
 
 def test_save_load_round_trip(tmp_path):

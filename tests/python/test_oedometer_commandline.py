@@ -70,3 +70,29 @@ def test_bad_table_is_named_before_any_work(table, message, tmp_path):
     assert p.returncode == 2
     assert message in p.stderr
     assert not (tmp_path / 'r').exists()
+
+
+@pytest.mark.parametrize('args,name,words', [
+    (['--seed', '1e30'], 'seed', '[0, 2^31 - 1]'),
+    (['--f', '1e-300'], 'f', 'more than the 1e+09'),
+    (['--Fmax', '1e300'], 'Fmax', 'outside rigid-sphere DEM'),
+    (['--Fmax', '-1e6'], 'Fmax', 'a finite number > 0'),     # a negative value is a value, not an option
+    (['--Fmin', '-5'], 'Fmin', 'a finite number >= 0'),
+    (['--results', '/dev/null/x'], 'results', 'can be created and written to'),
+    (['--packingDir', 'FILE'], 'packingDir', 'can be created and written to'),  # a regular file
+])
+def test_audit_cases_exit_2_before_any_work(args, name, words, tmp_path, capsys):
+    """Issue 15: each failed minutes later or never ended; now exit status 2, one line naming the parameter,
+    the value and what is allowed, before anything is built (checked in this process: main() exits
+    before the preparation)."""
+    from ballast.oedometer.commandline import main
+    plain = tmp_path / 'plain-file'
+    plain.write_text('not a folder')
+    args = [str(plain) if a == 'FILE' else a for a in args]
+    with pytest.raises(SystemExit) as e:
+        main(args + ['--results', str(tmp_path / 'r')] if name != 'results' else args)
+    assert e.value.code == 2
+    err = capsys.readouterr().err
+    assert err.startswith('oedometer.py: bad parameter %s: Oedometer: %s = ' % (name, name)), err
+    assert words in err and err.count('\n') == 1
+    assert not (tmp_path / 'r' / 'packings').exists() or name == 'packingDir'

@@ -34,6 +34,12 @@ def test_engine_parameters_are_the_engines_declarations():
     ({'prepYoung': 1e12}, 'prepYoung'),       # prepYoung > young
     ({'f': -1}, 'f'), ({'gamma': 1.2}, 'gamma'), ({'pattern': 5}, 'pattern'), ({'F': 2}, 'F'), ({'f': '2'}, 'f'),
     ({'law': 'hooke'}, 'law'), ({'loadMode': 'press'}, 'loadMode'),
+    # issue 15's audit: values that passed the checks and failed minutes later, or never ended
+    ({'seed': 1e30}, 'seed'), ({'seed': 2 ** 31}, 'seed'),  # YADE's makeCloud takes a C int
+    ({'f': 1e-300}, 'f'), ({'f': 0.01, 'cycles': 100}, 'f'),  # more than 1e9 time steps
+    ({'f': 1e5}, 'f'),                                        # fewer than 100 time steps a cycle
+    ({'Fmax': 1e300}, 'Fmax'), ({'Fmax': 2e7}, 'Fmax'),       # a single-contact overlap above 25 % of r
+    ({'gamma': 1e-300}, 'gamma'), ({'m': 1e5}, 'm'), ({'fatigueExponent': 0.5}, 'fatigueExponent'),
 ])
 def test_bad_values_name_the_parameter(values, name):
     with pytest.raises(ParamError) as e:
@@ -63,3 +69,23 @@ def test_readable_without_yade():
     out = subprocess.run(['/usr/bin/python3', '-c', code], capture_output=True, text=True, cwd='/')
     assert out.returncode == 0, out.stderr
     assert out.stdout.strip() == 'False'
+
+
+def test_run_bounds_by_hand():
+    """The bounds' numbers at the paper's values: dt = 0.8 x 0.01025 m x sqrt(2600 / 3e11) = 7.634e-7 s, so
+    one cycle at 8 Hz is 1.637e5 steps; Fmax = 1.5 MN through one steel contact of the smallest grain:
+    linear kn = 2 E r Es r / (E r + Es r) = 5.591e9 N/m, u = 2.683e-4 m = 2.6 % of r; Hertz E* =
+    1 / (0.91 / 3e11 + 0.9375 / 3e12) = 2.989e11 Pa, kno = 4/3 E* sqrt(r/2) = 2.853e10, u = (F / kno)^(2/3)
+    = 1.404e-3 m = 13.7 % of r: both below the 25 % allowed, 2e7 N is not (linear: 35 %)."""
+    from ballast.oedometer.parameters import singleContactOverlap, startTimeStep
+    p = check({})
+    assert startTimeStep(p) == pytest.approx(0.8 * 0.01025 * (2600 / 3e11) ** 0.5, rel=1e-12)
+    assert 1 / 8 / startTimeStep(p) == pytest.approx(1.637e5, rel=1e-3)
+    kn = 2 * 3e11 * 0.01025 * 3e12 * 0.01025 / (3e11 * 0.01025 + 3e12 * 0.01025)
+    assert singleContactOverlap(p, 1.5e6) == pytest.approx(1.5e6 / kn, rel=1e-12)
+    assert singleContactOverlap(p, 1.5e6) / 0.01025 == pytest.approx(0.02617, rel=1e-3)
+    estar = 1 / ((1 - 0.3 ** 2) / 3e11 + (1 - 0.25 ** 2) / 3e12)
+    ph = check({'law': 'hertz'})
+    assert singleContactOverlap(ph, 1.5e6) == pytest.approx((1.5e6 / (4 / 3 * estar * (0.01025 / 2) ** 0.5)) ** (2 / 3),
+                                                           rel=1e-12)
+    assert singleContactOverlap(ph, 1.5e6) / 0.01025 == pytest.approx(0.1369, rel=1e-3)

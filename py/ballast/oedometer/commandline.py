@@ -3,6 +3,7 @@ yade-batch table row (a column per name), every one checked before any work, the
 import argparse
 import math
 import os
+import re
 import sys
 
 from ..params import ParamError
@@ -54,11 +55,29 @@ def tableValues():
     return cells
 
 
+_NUMBER = re.compile(r'^-(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?$|^-(inf|nan)$', re.IGNORECASE)
+
+
+def joinNegativeValues(argv):
+    """`--Fmax -1e6` as `--Fmax=-1e6`: argparse takes '-1e6' for an option, and the value then reaches
+    the parameter's check, which names what is allowed."""
+    out, i = [], 0
+    while i < len(argv):
+        a = argv[i]
+        if a.startswith('--') and '=' not in a and i + 1 < len(argv) and _NUMBER.match(argv[i + 1]):
+            out.append('%s=%s' % (a, argv[i + 1]))
+            i += 2
+        else:
+            out.append(a)
+            i += 1
+    return out
+
+
 def readParams(argv):
     """defaults <- yade-batch table row <- command line, all checked. argparse exits with status 2
     on names it does not know (no abbreviations)."""
     values = tableValues()
-    values.update({k: v for k, v in vars(parser().parse_args(argv)).items() if v is not None})
+    values.update({k: v for k, v in vars(parser().parse_args(joinNegativeValues(argv))).items() if v is not None})
     return check(values, text=True)
 
 
@@ -69,6 +88,7 @@ def main(argv=None):
         params = readParams(sys.argv[1:] if argv is None else argv)
         from .experiment import Oedometer
         run = Oedometer(**params)
+        run.checkOutputs()
     except ParamError as e:
         sys.stderr.write('oedometer.py: bad parameter %s: %s\n' % (e.name, e))
         sys.exit(2)

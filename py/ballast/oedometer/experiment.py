@@ -33,7 +33,7 @@ from .. import grading
 from ..engines import BallastAbrasionEngine, BallastCrushEngine
 from ..geometry import sphereVolume
 from ..names import fmtTime, runDirName
-from ..params import validate
+from ..params import requireWritableDir, validate
 from . import callbacks, scene
 from .callbacks import command
 from .loading import MODES
@@ -111,9 +111,16 @@ class Oedometer:
             return
         raise RuntimeError('no free run directory for %s in %s' % (rid, p['results']))
 
+    def checkOutputs(self):
+        """Before any work: the results folder and the packing store can be created and written to."""
+        requireWritableDir(OWNER, 'results', self.p['results'])
+        if hasattr(self.packing, 'checkOutputs'):
+            self.packing.checkOutputs(self)
+
     def prepare(self):
         """The packing (built, or loaded from the store), settled in the cylinder."""
         if self.out is None:
+            self.checkOutputs()
             self.makeOutDir()
             self.phases.say('run %s -> %s' % (self.runId, self.out))
         self.adopt()

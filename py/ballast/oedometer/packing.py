@@ -16,7 +16,8 @@ from yade.wrapper import PyRunner, Sphere
 from ..geometry import meanCubedDiameterVolume, sphereVolume
 from . import scene
 from .callbacks import command
-from .parameters import packingKey
+from ..params import requireWritableDir
+from .parameters import OWNER, packingKey
 
 
 class StoredPacking:
@@ -42,9 +43,17 @@ class StoredPacking:
         self.file, self.reused, self.escaped = s['file'], s['reused'], s['escaped']
 
     # ------------------------------------------------------------------ the piece's entry point
+    @staticmethod
+    def folder(p):
+        return p['packingDir'] or os.path.join(p['results'], 'packings')
+
+    def checkOutputs(self, exp):
+        """The store is a folder this run can write (checked before any work)."""
+        requireWritableDir(OWNER, 'packingDir', self.folder(exp.p))
+
     def prepare(self, exp):
         p = exp.p
-        pdir = p['packingDir'] or os.path.join(p['results'], 'packings')
+        pdir = self.folder(p)
         keyDict, fname = packingKey(p)
         path = os.path.join(pdir, fname)
         if p['reusePacking'] and os.path.exists(path):

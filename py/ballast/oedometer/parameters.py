@@ -9,17 +9,17 @@ import hashlib
 import json
 import math
 
-from ..params import (ABRASION, CRUSH, NUMBER_NONNEGATIVE, NUMBER_POSITIVE, Param, ParamError, anyText, between,
-                      boolean, choice, flag, intAtLeast, intNonNegative, nonNegative, positive, positiveInt, text,
-                      validateAll)
+from ..params import (ABRASION, CRUSH, INT32_MAX, NUMBER_NONNEGATIVE, NUMBER_POSITIVE, Param, ParamError, anyText,
+                      between, boolean, choice, flag, intAtLeast, intBetween, nonNegative, positive, positiveInt,
+                      text, validateAll)
 
 OWNER = 'Oedometer'
 _PHI = 'a number in [0, pi/2)'
 
 PARAMS = {
     # realization and geometry (section 4, Fig. 3)
-    'seed': Param(1, '-', 'realization: grain sizes and positions, fragment orientations', intNonNegative,
-                  'an integer >= 0'),
+    'seed': Param(1, '-', 'realization: grain sizes and positions, fragment orientations (YADE\'s makeCloud takes '
+                  'a C int)', intBetween(0, INT32_MAX), 'an integer in [0, 2^31 - 1]'),
     'diameter': Param(0.300, 'm', 'inner diameter of the steel cylinder', positive, NUMBER_POSITIVE),
     'height': Param(0.150, 'm', 'height of the cylinder; the grains fill it after deposition', positive, NUMBER_POSITIVE),
     'dMin': Param(0.0205, 'm', 'smallest grain diameter (diameters uniform in [dMin, dMax])', positive, NUMBER_POSITIVE),
@@ -127,10 +127,47 @@ PACKING_KEYS = ('seed', 'diameter', 'height', 'dMin', 'dMax', 'segments', 'young
 PACKING_VERSION = 4
 
 
+# A run must end and stay in the range where rigid-sphere DEM holds: these bounds are checked before any work.
+MAX_LOADING_STEPS = 1e9     # [steps] cycles / f / dt at the start; 1e9 steps are days of CPU (3e5 at 8 Hz, 1 cycle)
+MIN_STEPS_PER_CYCLE = 100   # [steps] a cycle resolved by fewer time steps is not a load cycle
+MAX_OVERLAP_RATIO = 0.25    # [-] overlap / radius of the smallest grain if Fmax went through one of its steel contacts
+
+
+def startTimeStep(p):
+    """The loading time step [s] at the start: dtSafety times YADE's PWaveTimeStep (eq. 5) of the
+    smallest grain, r sqrt(rho / E)."""
+    return p['dtSafety'] * p['dMin'] / 2 * math.sqrt(p['density'] / p['young'])
+
+
+def singleContactOverlap(p, force):
+    """Overlap [m] of the smallest grain (r = dMin/2) carrying `force` [N] through one contact with steel,
+    with YADE's stiffness of that contact: linear kn = 2 E r Es r / (E r + Es r), Hertz F = kno u^1.5 with
+    kno = 4/3 E* sqrt(r / 2) (YADE takes R = r/2 against a wall)."""
+    r, E, Es = p['dMin'] / 2, p['young'], p['young'] * p['steelYoungRatio']
+    if p['law'] == 'linear':
+        return force / (2 * E * r * Es * r / (E * r + Es * r))
+    Estar = 1 / ((1 - p['poisson'] ** 2) / E + (1 - p['steelPoisson'] ** 2) / Es)
+    return (force / (4.0 / 3.0 * Estar * math.sqrt(r / 2))) ** (2.0 / 3.0)
+
+
 def crossCheck(p):
     """Checks between parameters; each error names the parameter at fault."""
     def bad(name, why):
         raise ParamError(name, '%s: %s = %r is not allowed: %s' % (OWNER, name, p[name], why))
+    dt = startTimeStep(p)
+    steps = p['cycles'] / p['f'] / dt
+    if steps > MAX_LOADING_STEPS:
+        bad('f', '%d cycles at %g Hz take %.3g time steps of %.3g s (dtSafety PWaveTimeStep of the smallest grain), '
+                 'more than the %.0e a run may take: raise f or lower cycles' % (p['cycles'], p['f'], steps, dt,
+                                                                                  MAX_LOADING_STEPS))
+    if 1 / p['f'] / dt < MIN_STEPS_PER_CYCLE:
+        bad('f', 'a cycle of %.3g s spans %.3g time steps of %.3g s, fewer than %d' % (
+            1 / p['f'], 1 / p['f'] / dt, dt, MIN_STEPS_PER_CYCLE))
+    u = singleContactOverlap(p, p['Fmax'])
+    if u > MAX_OVERLAP_RATIO * p['dMin'] / 2:
+        bad('Fmax', 'through one steel contact of the smallest grain it would overlap it by %.3g m, %.3g of its radius '
+                    '(%s law), more than %g: outside rigid-sphere DEM' % (u, u / (p['dMin'] / 2), p['law'],
+                                                                          MAX_OVERLAP_RATIO))
     if p['dMin'] >= p['dMax']:
         bad('dMin', 'must be smaller than dMax = %g' % p['dMax'])
     if p['dMax'] >= p['diameter'] / 2:
