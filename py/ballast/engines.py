@@ -256,12 +256,16 @@ class BallastCrushEngine(_BallastEngine):
         frags = _ballast.placeFragments(self.pattern, (pos[0], pos[1], pos[2]), r, self.seed, self._counter)
         self.__dict__['_counter'] += 1
         O.bodies.erase(bid)
+        bodies = [utils.sphere(Vector3(x, y, z), rf, material=mat, color=color, mask=mask) for x, y, z, rf in frags]
+        if self.keep == 'mass':  # denser fragments: the parent's mass; its momentum then too (centroid at its centre)
+            scale = mass / sum(nb.state.mass for nb in bodies)
+            for nb in bodies:
+                nb.state.mass *= scale
+                nb.state.inertia = nb.state.inertia * scale
         newIds, newMass = [], 0.0
-        for x, y, z, rf in frags:
-            c = Vector3(x, y, z)
-            nb = utils.sphere(c, rf, material=mat, color=color, mask=mask)
+        for nb in bodies:
             # rigid-body velocity of the parent at the fragment's centre: momentum kept with the mass kept
-            nb.state.vel = vel + angVel.cross(c - pos)
+            nb.state.vel = vel + angVel.cross(nb.state.pos - pos)
             nb.state.angVel = angVel
             newMass += nb.state.mass
             newIds.append(O.bodies.append(nb))

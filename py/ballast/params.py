@@ -277,6 +277,10 @@ CRUSH = dict({
                      "'octa6' or 'fill14'"),
     'seed': Param(0, '-', 'seed of the random orientation of fragments (reproducible)', intBetween(0, INT64_MAX),
                   'an integer in [0, 2^63 - 1]'),
+    'keep': Param('none', '-', "what a replacement keeps besides the fragments' own volume: 'none' (the paper: "
+                  "the mass of the lost volume is lost), 'mass' (the fragments' mass and inertia are scaled up "
+                  "so that the parent's mass and momentum are kept)", choice('none', 'mass'), "'none' or 'mass'",
+                  text),
     # fatigue, beyond the paper (docs/fatigue.md): Basquin-Miner damage D on the peaks of s = sigma_e / f_t
     'fatigue': Param(False, '-', 'fatigue: each grain accumulates damage D from the peaks of its stress ratio s '
                      '= sigma_e / f_t and crushes when s > 1 - D (docs/fatigue.md); fragments start undamaged',

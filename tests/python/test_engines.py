@@ -103,6 +103,32 @@ def test_fragments_move_with_the_parent_rigid_body_velocity():
         np.testing.assert_allclose(np.array(f.state.angVel), w, atol=1e-15)
 
 
+@pytest.mark.parametrize('pattern', [4, 'planar4', 6, 14])
+def test_keep_mass_scales_the_fragments_to_the_parents_mass_and_momentum(pattern):
+    """keep='mass': each fragment's mass is rho 4/3 pi r_f^3 times M / (rho V_fragments) = 1 / kept, so the
+    fragments weigh M: the mass ledger loses nothing, the lost volume is the geometric one, the moment of
+    inertia stays 2/5 m r_f^2 of the scaled mass, and the momentum is M v."""
+    g, w1, F, arm, uN = loadedGrain()
+    b = O.bodies[g]
+    v = np.array([0.0, 0.0, 0.4])
+    b.state.vel = tuple(v)
+    M = b.state.mass
+    crush = add(BallastCrushEngine(ft0=1.0, pattern=pattern, keep='mass', iterPeriod=1))
+    O.run(1, True)
+    frag = [O.bodies[i] for i in crush.events[0]['newIds']]
+    m = np.array([f.state.mass for f in frag])
+    kept = ballast.keptVolumeFraction(pattern)
+    assert m.sum() == pytest.approx(M, rel=1e-12) and crush.massLost == pytest.approx(0.0, abs=1e-12 * M)
+    assert crush.volumeLost == pytest.approx((1 - kept) * 4 / 3 * math.pi * R ** 3, rel=1e-12)
+    rho = b.material.density if O.bodies[g] is not None else frag[0].material.density
+    for f in frag:
+        m0 = 4 / 3 * math.pi * f.shape.radius ** 3 * rho
+        assert f.state.mass == pytest.approx(m0 / kept, rel=1e-12)
+        assert f.state.inertia[2] == pytest.approx(0.4 * f.state.mass * f.shape.radius ** 2, rel=1e-12)
+    vel = np.array([f.state.vel for f in frag])
+    np.testing.assert_allclose((m[:, None] * vel).sum(0), M * v, rtol=1e-12, atol=1e-15)
+
+
 @pytest.mark.parametrize('ratio', [1.01, 0.99])
 def test_abrasion_scales_radius_by_gamma_mass_by_gamma3(ratio):
     g, w1, F, arm, uN = loadedGrain()

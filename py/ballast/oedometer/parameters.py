@@ -88,6 +88,7 @@ PARAMS = {
     'm': CRUSH['m'],
     'pattern': CRUSH['pattern'],
     'rMin': CRUSH['rMin'].withDefault(0.010),
+    'keep': CRUSH['keep'],
     'fatigue': CRUSH['fatigue'],
     'fatigueExponent': CRUSH['fatigueExponent'],
     'fatigueEndurance': CRUSH['fatigueEndurance'],
