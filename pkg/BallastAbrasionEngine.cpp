@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "FabricStress.hpp"
 #include "HertzPressure.hpp"
 #include "InputCheck.hpp"
 
@@ -25,10 +26,11 @@ void evaluateAbrasion(const AbrasionParameters& p, long n, const double* radii, 
 		p0max[g] = 0;
 	}
 	for (long c = 0; c < nContacts; ++c) {
-		for (long gi : {grain1[c], grain2[c]})
-			if (gi < -1 || gi >= n)
-				throw ArgumentError("grain index of contact " + std::to_string(c) + ": expected -1 or 0 <= index < "
-				                    + std::to_string(n) + ", got " + std::to_string(gi));
+		const long gi[2] = {grain1[c], grain2[c]};
+		for (int side = 0; side < 2; ++side)
+			if (gi[side] < -1 || gi[side] >= n)
+				throw ArgumentError(std::string(side ? "grain2[" : "grain1[") + std::to_string(c) + "]: expected -1 or 0 <= index < "
+				                    + std::to_string(n) + ", got " + std::to_string(gi[side]));
 		if (grain1[c] < 0 && grain2[c] < 0) continue;
 		const double p0 = hertzPressure(Fn[c], R1[c], R2[c], uN[c]);  // eq. 7
 		if (grain1[c] >= 0) p0max[grain1[c]] = std::max(p0max[grain1[c]], p0);
@@ -53,12 +55,11 @@ void abrasionPressureBound(long n, const double* traces, const double* radii, do
 	requirePositive("EstarMax", EstarMax);
 	for (long g = 0; g < n; ++g) {
 		const double r = radii[g];
-		requirePositive("radii", g, r);
+		const double V = sphereVolume("radii", g, r);
 		requireFinite("traces", g, traces[g]);
-		const double V    = 4.0 / 3.0 * M_PI * r * r * r;
-		const double Fmax = 2.0 * std::fabs(traces[g]) * V / r;                 // largest single normal force
-		const double Rmin = rPartner == 0 ? r : r * rPartner / (r + rPartner);  // smallest effective radius
-		bound[g]          = hertzPressureFromForce(Fmax, Rmin, EstarMax);
+		const double Fmax = 2.0 * std::fabs(traces[g]) * V / r;  // largest single normal force
+		requireFiniteResult("traces, radii", "largest contact force 2 |tr sigma| V / r", g, Fmax);
+		bound[g] = hertzPressureFromForce(Fmax, effectiveRadius(r, rPartner), EstarMax);  // smallest R (rPartner 0: R = r)
 	}
 }
 

@@ -36,7 +36,8 @@ double sphereContactBound(double maxOverlapRatio, double EstarMax);
 //   eq. 3 traced, shear being normal to the branch l = r - u_N/2:  sum_c F_N,c l_c = |tr sigma| V,
 //   l_c >= r/2 (u_N <= r)                                        =>  F_N,c <= 2 |tr sigma| V / r,
 //   then eq. 7 with the Hertz law (hertzPressureFromForce), R >= r rPartner / (r + rPartner), E* <= EstarMax.
-// n grains: traces tr(sigma) [Pa], radii r [m] (V = 4/3 pi r^3). Writes bound [Pa].
+// n grains: traces tr(sigma) [Pa], radii r [m] (V = 4/3 pi r^3, see sphereVolume). Writes bound [Pa], which may be
+// infinite for an EstarMax or a force beyond the range of doubles (the binding refuses it).
 void abrasionPressureBound(long n, const double* traces, const double* radii, double rPartner, double EstarMax,
                            double* bound);
 

@@ -1,15 +1,37 @@
 #include "FabricStress.hpp"
 
 #include <cmath>
+#include <string>
 
 #include "InputCheck.hpp"
 
 namespace ballast {
 
+namespace {
+	double volume(double r) { return 4.0 / 3.0 * M_PI * r * r * r; }
+
+	// A subnormal volume has lost precision and a zero one gives 0/0: both are refused, like an infinite one.
+	[[noreturn]] void badVolume(const std::string& name, double r)
+	{
+		throw ArgumentError(name + ": expected a radius whose volume 4/3 pi r^3 neither under- nor overflows "
+		                    + "(about 2e-103 < r < 3e102), got " + formatValue(r));
+	}
+}  // namespace
+
 double sphereVolume(double r)
 {
 	requirePositive("radius", r);
-	return 4.0 / 3.0 * M_PI * r * r * r;
+	const double V = volume(r);
+	if (!std::isnormal(V)) badVolume("radius", r);
+	return V;
+}
+
+double sphereVolume(const char* array, long index, double r)
+{
+	requirePositive(array, index, r);
+	const double V = volume(r);
+	if (!std::isnormal(V)) badVolume(std::string(array) + "[" + std::to_string(index) + "]", r);
+	return V;
 }
 
 Mat3 fabricStress(double r, const std::vector<Vec3>& branches, const std::vector<Vec3>& forces)
@@ -28,8 +50,9 @@ void fabricStressMany(int nGrains, const double* radii, int nContacts, const lon
                       const double* forces, double* out)
 {
 	if (nGrains < 0) throw ArgumentError("nGrains: expected >= 0, got " + std::to_string(nGrains));
+	std::vector<double> V(nGrains);
 	for (int g = 0; g < nGrains; ++g)
-		requirePositive("radii", g, radii[g]);
+		V[g] = sphereVolume("radii", g, radii[g]);
 	for (int c = 0; c < nContacts; ++c)
 		if (grainOf[c] < 0 || grainOf[c] >= nGrains)
 			throw ArgumentError("grainIndex[" + std::to_string(c) + "]: expected 0 <= index < " + std::to_string(nGrains)
@@ -45,7 +68,7 @@ void fabricStressMany(int nGrains, const double* radii, int nContacts, const lon
 				s[3 * i + j] += l[i] * f[j];
 	}
 	for (int g = 0; g < nGrains; ++g)
-		S.row(g) /= sphereVolume(radii[g]);
+		S.row(g) /= V[g];
 }
 
 }  // namespace ballast

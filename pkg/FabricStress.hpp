@@ -9,8 +9,11 @@
 
 namespace ballast {
 
-// Volume of a sphere of radius r [m^3]; r > 0.
+// Volume of a sphere of radius r [m^3]; r > 0, and the volume neither under- nor overflows
+// (about 2e-103 < r < 3e102): stresses divided by it stay meaningful.
 double sphereVolume(double r);
+// The same for element index of an array of radii, named in the error ("radii[3]").
+double sphereVolume(const char* array, long index, double r);
 
 // Eq. 3 for one grain of radius r [m]; branches and forces have the same length.
 Mat3 fabricStress(double r, const std::vector<Vec3>& branches, const std::vector<Vec3>& forces);

@@ -1,5 +1,6 @@
 #include "HertzPressure.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "InputCheck.hpp"
@@ -13,7 +14,9 @@ double effectiveRadius(double R1, double R2)
 	if (R1 == 0 && R2 == 0) throw ArgumentError("R1, R2: expected at least one radius > 0 (0 means a wall), got 0 and 0");
 	if (R1 == 0) return R2;
 	if (R2 == 0) return R1;
-	return R1 * R2 / (R1 + R2);
+	// R1 R2 / (R1 + R2) written so that it neither overflows (R1 R2 > 1.8e308) nor underflows (R1 R2 < 5e-324)
+	const double a = std::min(R1, R2), b = std::max(R1, R2);
+	return a / (1.0 + a / b);
 }
 
 double hertzPressure(double Fn, double R1, double R2, double uN)

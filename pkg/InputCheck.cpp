@@ -8,13 +8,14 @@ namespace ballast {
 
 std::string formatValue(double v)
 {
+	if (std::isnan(v)) return "nan";  // printf may write -nan, Python never does
 	char buf[40];
 	std::snprintf(buf, sizeof buf, "%.17g", v);
 	// shortest representation that reads back to the same double
 	for (int prec = 1; prec <= 17; ++prec) {
 		char b[40];
 		std::snprintf(b, sizeof b, "%.*g", prec, v);
-		if (std::strtod(b, nullptr) == v || std::isnan(v)) return b;
+		if (std::strtod(b, nullptr) == v) return b;
 	}
 	return buf;
 }
@@ -47,6 +48,19 @@ void requireFinite(const char* array, long index, double v)
 void requirePositive(const char* array, long index, double v)
 {
 	if (!std::isfinite(v) || v <= 0) requirePositive(element(array, index), v);
+}
+
+void requireFiniteResult(const std::string& names, const std::string& what, double v)
+{
+	if (!std::isfinite(v))
+		throw ArgumentError(names + ": expected values whose " + what + " is finite, the result would be " + formatValue(v));
+}
+
+void requireFiniteResult(const char* names, const char* what, long index, double v)
+{
+	if (!std::isfinite(v))
+		throw ArgumentError(std::string(names) + ": expected values whose " + what + " is finite, the result would be "
+		                    + formatValue(v) + " at index " + std::to_string(index));
 }
 
 }  // namespace ballast

@@ -23,4 +23,10 @@ void requireNonNegative(const std::string& name, double v);  // finite and >= 0
 void requireFinite(const char* array, long index, double v);
 void requirePositive(const char* array, long index, double v);
 
+// Refuses a computed result that is not finite (an overflow, or a division by an underflowed number):
+// names lists the arguments it is computed from, what says what it is ("Hertz pressure").
+void requireFiniteResult(const std::string& names, const std::string& what, double v);
+// The same for element index of an array result.
+void requireFiniteResult(const char* names, const char* what, long index, double v);
+
 }  // namespace ballast

@@ -1,9 +1,12 @@
 // Python binding `ballast._ballast` of the C++ core (Boost.Python + Boost.Python NumPy).
 // Arrays in, arrays out: every loop over grains or contacts runs here, never in Python.
-// Bad input raises TypeError (wrong type, dtype or shape) or ValueError (bad value) naming the argument.
+// Bad input raises TypeError (wrong type, dtype or shape) or ValueError (bad value, or a result that would
+// not be finite) naming the argument. NumPy scalars and 0-d arrays are taken wherever Python numbers are.
 #include <boost/python.hpp>
 #include <boost/python/numpy.hpp>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -37,6 +40,8 @@ std::string shapeOf(const np::ndarray& a)
 	return s + ")";
 }
 
+long sizeOf(const np::ndarray& a) { return bp::len(a.attr("ravel")()); }
+
 // Converts obj to a C-contiguous array of dtype (float64 or int64), accepting only the dtype kinds given.
 np::ndarray asArray(const bp::object& obj, const std::string& name, const char* kinds, const np::dtype& dt)
 {
@@ -52,6 +57,14 @@ np::ndarray asArray(const bp::object& obj, const std::string& name, const char* 
 	if (kind.size() != 1 || std::string(kinds).find(kind[0]) == std::string::npos)
 		throw TypeError(name + ": expected " + (std::string(kinds) == "iu" ? "integers" : "real numbers") + ", got dtype "
 		                + pyStr(arr.attr("dtype")));
+	if (kind == "u" && dt == np::dtype::get_builtin<long>()) {  // uint64 above 2^63 - 1 would wrap round to negative
+		np::ndarray u = bp::extract<np::ndarray>(numpy.attr("require")(arr, np::dtype::get_builtin<std::uint64_t>(), "C"));
+		const auto* p = reinterpret_cast<const std::uint64_t*>(u.get_data());
+		for (long i = 0, n = sizeOf(u); i < n; ++i)
+			if (p[i] > (std::uint64_t)std::numeric_limits<long>::max())
+				throw ArgumentError(name + ": expected integers below 2^63, got " + std::to_string(p[i]) + " at flat index "
+				                    + std::to_string(i));
+	}
 	bp::object c = numpy.attr("require")(arr, dt, "C");  // ascontiguousarray would turn 0-d into 1-d
 	return bp::extract<np::ndarray>(c);
 }
@@ -59,7 +72,7 @@ np::ndarray asArray(const bp::object& obj, const std::string& name, const char* 
 np::ndarray asDoubles(const bp::object& obj, const std::string& name)
 {
 	np::ndarray a = asArray(obj, name, "iuf", np::dtype::get_builtin<double>());
-	const long  n = bp::len(a.attr("ravel")());
+	const long  n = sizeOf(a);
 	const auto* p = reinterpret_cast<const double*>(a.get_data());
 	for (long i = 0; i < n; ++i)
 		if (!std::isfinite(p[i]))
@@ -92,18 +105,51 @@ np::ndarray emptyDoubles(std::vector<long> shape)
 }
 double* wptr(np::ndarray& a) { return reinterpret_cast<double*>(a.get_data()); }
 
+// A real number: Python int or float, NumPy integer or float scalar, or 0-d array.
 double asScalar(const bp::object& obj, const std::string& name)
 {
-	np::ndarray a = asDoubles(obj, name);
+	np::ndarray a = asArray(obj, name, "iuf", np::dtype::get_builtin<double>());
 	if (a.get_nd() != 0) throw TypeError(name + ": expected a number, got an array of shape " + shapeOf(a));
+	requireFinite(name, *dptr(a));
 	return *dptr(a);
+}
+
+// An integer: Python int, NumPy integer scalar or 0-d integer array, as a Python int. Bools are refused
+// (NumPy still lets np.bool_ pass as an index), and so are floats, even 6.0.
+bp::object asInteger(const bp::object& obj, const std::string& name, const std::string& what)
+{
+	const bp::object npBool = bp::import("numpy").attr("bool_");
+	const bool       isBool = PyBool_Check(obj.ptr()) || PyObject_IsInstance(obj.ptr(), npBool.ptr()) == 1;
+	PyObject*        i      = isBool ? nullptr : PyNumber_Index(obj.ptr());
+	if (!i) {
+		PyErr_Clear();
+		throw TypeError(name + ": expected " + what + ", got " + pyStr(obj.attr("__repr__")()));
+	}
+	return bp::object(bp::handle<>(i));
+}
+
+// Refuses a result that is not finite (an overflow, or a division by an underflowed number), naming the
+// arguments it is computed from; the error gives the first index of the result (a grain, a contact)
+// unless the result is one value or one tensor (indexed false).
+const np::ndarray& finiteResult(const np::ndarray& out, const char* names, const char* what, bool indexed = true)
+{
+	const long n = sizeOf(out);
+	if (out.get_nd() == 0 || !indexed) {
+		for (long k = 0; k < n; ++k)
+			requireFiniteResult(names, what, dptr(out)[k]);
+		return out;
+	}
+	const long perRow = out.shape(0) ? n / out.shape(0) : 1;
+	for (long k = 0; k < n; ++k)
+		requireFiniteResult(names, what, k / perRow, dptr(out)[k]);
+	return out;
 }
 
 // ---------------------------------------------------------------- eq. 3
 np::ndarray py_fabricStress(const bp::object& radius, const bp::object& branches, const bp::object& forces)
 {
 	const double r = asScalar(radius, "radius");
-	requirePositive("radius", r);
+	sphereVolume(r);  // r > 0 and a volume that neither under- nor overflows; errors name radius, not radii[0]
 	np::ndarray  l  = asDoubles(branches, "branches");
 	np::ndarray  f  = asDoubles(forces, "forces");
 	const long   nl = requireShape(l, "branches", {-1, 3}, "an (n,3) array");
@@ -112,7 +158,7 @@ np::ndarray py_fabricStress(const bp::object& radius, const bp::object& branches
 	std::vector<long> zero(nl, 0);
 	np::ndarray       out = emptyDoubles({3, 3});
 	fabricStressMany(1, &r, nl, zero.data(), dptr(l), dptr(f), wptr(out));
-	return out;
+	return finiteResult(out, "radius, branches, forces", "fabric stress", false);
 }
 
 np::ndarray py_grainStresses(const bp::object& radii, const bp::object& grainIndex, const bp::object& branches, const bp::object& forces)
@@ -127,7 +173,7 @@ np::ndarray py_grainStresses(const bp::object& radii, const bp::object& grainInd
 	requireShape(f, "forces", {m, 3}, "an (" + std::to_string(m) + ",3) array, one row per grainIndex");
 	np::ndarray out = emptyDoubles({n, 3, 3});
 	fabricStressMany(n, dptr(r), m, lptr(gi), dptr(l), dptr(f), wptr(out));
-	return out;
+	return finiteResult(out, "radii, branches, forces", "fabric stress");
 }
 
 // ---------------------------------------------------------------- eq. 2
@@ -136,13 +182,15 @@ bp::object py_vonMises(const bp::object& sigma)
 	np::ndarray s = asDoubles(sigma, "sigma");
 	if (s.get_nd() == 2) {
 		requireShape(s, "sigma", {3, 3}, "a (3,3) or (N,3,3) array");
-		return bp::object(vonMises(Eigen::Map<const Mat3>(dptr(s))));
+		const double v = vonMises(Eigen::Map<const Mat3>(dptr(s)));
+		requireFiniteResult("sigma", "von Mises stress", v);
+		return bp::object(v);
 	}
 	const long  n   = requireShape(s, "sigma", {-1, 3, 3}, "a (3,3) or (N,3,3) array");
 	np::ndarray out = emptyDoubles({n});
 	for (long i = 0; i < n; ++i)
 		wptr(out)[i] = vonMises(Eigen::Map<const Mat3>(dptr(s) + 9 * i));
-	return out;
+	return finiteResult(out, "sigma", "von Mises stress");
 }
 
 np::ndarray py_principalStresses(const bp::object& sigma)
@@ -158,20 +206,22 @@ np::ndarray py_principalStresses(const bp::object& sigma)
 		for (int k = 0; k < 3; ++k)
 			wptr(out)[3 * i + k] = p[k];
 	}
-	return out;
+	return finiteResult(out, "sigma", "principal stress", !one);
 }
 
 // ---------------------------------------------------------------- eq. 4, eq. 7: scalars or arrays
-// Broadcasts the arguments like NumPy; returns a float when all are scalars.
-bp::object elementwise(const std::vector<std::pair<std::string, bp::object>>& args, double (*fn)(const double*))
+// Broadcasts the arguments like NumPy; returns a float when all are scalars. what names the result.
+bp::object elementwise(const std::vector<std::pair<std::string, bp::object>>& args, const char* what, double (*fn)(const double*))
 {
 	std::vector<np::ndarray> a;
 	bool                     allScalar = true;
 	bp::list                 objs;
+	std::string              names;
 	for (const auto& kv : args) {
 		a.push_back(asDoubles(kv.second, kv.first));
 		allScalar = allScalar && a.back().get_nd() == 0;
 		objs.append(a.back());
+		names += (names.empty() ? "" : ", ") + kv.first;
 	}
 	bp::object numpy = bp::import("numpy");
 	bp::object b;
@@ -179,17 +229,15 @@ bp::object elementwise(const std::vector<std::pair<std::string, bp::object>>& ar
 		b = numpy.attr("broadcast_arrays")(*bp::tuple(objs));
 	} catch (const bp::error_already_set&) {
 		PyErr_Clear();
-		std::string names, shapes;
-		for (size_t i = 0; i < a.size(); ++i) {
-			names += (i ? ", " : "") + args[i].first;
+		std::string shapes;
+		for (size_t i = 0; i < a.size(); ++i)
 			shapes += (i ? ", " : "") + shapeOf(a[i]);
-		}
 		throw TypeError(names + ": expected scalars or arrays of equal length, got shapes " + shapes);
 	}
 	std::vector<np::ndarray> c;
 	for (size_t i = 0; i < a.size(); ++i)
 		c.push_back(bp::extract<np::ndarray>(numpy.attr("ascontiguousarray")(bp::object(b[i]), "float64")));
-	const long n = bp::len(c[0].attr("ravel")());
+	const long n = sizeOf(c[0]);
 	np::ndarray out = bp::extract<np::ndarray>(numpy.attr("zeros")(bp::object(c[0].attr("shape")), "float64"));
 	std::vector<double> x(a.size());
 	for (long k = 0; k < n; ++k) {
@@ -197,30 +245,33 @@ bp::object elementwise(const std::vector<std::pair<std::string, bp::object>>& ar
 			x[i] = dptr(c[i])[k];
 		wptr(out)[k] = fn(x.data());
 	}
+	finiteResult(out, names.c_str(), what);
 	if (allScalar) return bp::object(wptr(out)[0]);
 	return out;
 }
 
 bp::object py_hertzPressure(const bp::object& Fn, const bp::object& R1, const bp::object& R2, const bp::object& uN)
 {
-	return elementwise({{"Fn", Fn}, {"R1", R1}, {"R2", R2}, {"uN", uN}},
+	return elementwise({{"Fn", Fn}, {"R1", R1}, {"R2", R2}, {"uN", uN}}, "Hertz pressure",
 	                   [](const double* x) { return hertzPressure(x[0], x[1], x[2], x[3]); });
 }
 
 bp::object py_effectiveRadius(const bp::object& R1, const bp::object& R2)
 {
-	return elementwise({{"R1", R1}, {"R2", R2}}, [](const double* x) { return effectiveRadius(x[0], x[1]); });
+	return elementwise({{"R1", R1}, {"R2", R2}}, "effective radius", [](const double* x) { return effectiveRadius(x[0], x[1]); });
 }
 
 bp::object py_sizeStrength(const bp::object& ft0, const bp::object& r, const bp::object& m)
 {
-	return elementwise({{"ft0", ft0}, {"radius", r}, {"m", m}}, [](const double* x) { return sizeStrength(x[0], x[1], x[2]); });
+	return elementwise({{"ft0", ft0}, {"radius", r}, {"m", m}}, "strength ft0 / r^m",
+	                   [](const double* x) { return sizeStrength(x[0], x[1], x[2]); });
 }
 
 // ---------------------------------------------------------------- snapshot decisions
-bp::tuple py_crushCheck(const bp::object& stresses, const bp::object& radii, double ft0, double m, double rMin)
+bp::tuple py_crushCheck(const bp::object& stresses, const bp::object& radii, const bp::object& ft0, const bp::object& m,
+                        const bp::object& rMin)
 {
-	CrushParameters p{ft0, m, rMin};
+	CrushParameters p{asScalar(ft0, "ft0"), asScalar(m, "m"), asScalar(rMin, "rMin")};
 	p.validate();
 	np::ndarray s = asDoubles(stresses, "stresses");
 	np::ndarray r = asDoubles(radii, "radii");
@@ -229,15 +280,18 @@ bp::tuple py_crushCheck(const bp::object& stresses, const bp::object& radii, dou
 	np::ndarray               sigmaE = emptyDoubles({n}), ft = emptyDoubles({n});
 	std::vector<std::uint8_t> crush(n);
 	evaluateCrushing(p, n, dptr(s), dptr(r), wptr(sigmaE), wptr(ft), crush.data());
+	finiteResult(sigmaE, "stresses", "von Mises stress");
+	finiteResult(ft, "ft0, radii, m", "strength ft0 / r^m");
 	np::ndarray flag = np::zeros(bp::make_tuple(n), np::dtype::get_builtin<bool>());
 	std::copy(crush.begin(), crush.end(), reinterpret_cast<bool*>(flag.get_data()));
 	return bp::make_tuple(sigmaE, ft, flag);
 }
 
 bp::tuple py_abrasionCheck(const bp::object& radii, const bp::object& grain1, const bp::object& grain2, const bp::object& Fn,
-                           const bp::object& R1, const bp::object& R2, const bp::object& uN, double strength, double rMin)
+                           const bp::object& R1, const bp::object& R2, const bp::object& uN, const bp::object& strength,
+                           const bp::object& rMin)
 {
-	AbrasionParameters p{strength, rMin};
+	AbrasionParameters p{asScalar(strength, "strength"), asScalar(rMin, "rMin")};
 	p.validate();
 	np::ndarray r = asDoubles(radii, "radii");
 	const long  n = requireShape(r, "radii", {-1}, "a 1-d array");
@@ -253,15 +307,16 @@ bp::tuple py_abrasionCheck(const bp::object& radii, const bp::object& grain1, co
 	np::ndarray               p0 = emptyDoubles({n});
 	std::vector<std::uint8_t> ab(n);
 	evaluateAbrasion(p, n, dptr(r), m, lptr(g1), lptr(c[0]), dptr(c[1]), dptr(c[2]), dptr(c[3]), dptr(c[4]), wptr(p0), ab.data());
+	finiteResult(p0, "Fn, R1, R2, uN", "Hertz pressure");
 	np::ndarray flag = np::zeros(bp::make_tuple(n), np::dtype::get_builtin<bool>());
 	std::copy(ab.begin(), ab.end(), reinterpret_cast<bool*>(flag.get_data()));
 	return bp::make_tuple(p0, flag);
 }
 
-bp::tuple py_fatigueCheck(const bp::object& ratio, const bp::object& radii, const bp::object& state, double exponent,
-                          double endurance, double hysteresis, double rMin)
+bp::tuple py_fatigueCheck(const bp::object& ratio, const bp::object& radii, const bp::object& state, const bp::object& exponent,
+                          const bp::object& endurance, const bp::object& hysteresis, const bp::object& rMin)
 {
-	FatigueParameters p{exponent, endurance, hysteresis};
+	FatigueParameters p{asScalar(exponent, "exponent"), asScalar(endurance, "endurance"), asScalar(hysteresis, "hysteresis")};
 	p.validate();
 	np::ndarray s = asDoubles(ratio, "ratio");
 	const long  n = requireShape(s, "ratio", {-1}, "a 1-d array");
@@ -272,46 +327,60 @@ bp::tuple py_fatigueCheck(const bp::object& ratio, const bp::object& radii, cons
 	np::ndarray out = emptyDoubles({n, 4});
 	std::copy(dptr(st0), dptr(st0) + 4 * n, wptr(out));
 	std::vector<unsigned char> crush(n);
-	evaluateFatigue(p, rMin, n, dptr(s), dptr(r), reinterpret_cast<GrainFatigue*>(wptr(out)), crush.data());
+	evaluateFatigue(p, asScalar(rMin, "rMin"), n, dptr(s), dptr(r), reinterpret_cast<GrainFatigue*>(wptr(out)), crush.data());
+	finiteResult(out, "ratio, state, exponent", "fatigue damage");
 	np::ndarray flag = np::zeros(bp::make_tuple(n), np::dtype::get_builtin<bool>());
 	std::copy(crush.begin(), crush.end(), reinterpret_cast<bool*>(flag.get_data()));
 	return bp::make_tuple(out, flag);
 }
 
-np::ndarray py_abrasionBound(const bp::object& stresses, const bp::object& radii, double rPartner, double EstarMax)
+np::ndarray py_abrasionBound(const bp::object& stresses, const bp::object& radii, const bp::object& rPartner,
+                             const bp::object& EstarMax)
 {
 	np::ndarray s = asDoubles(stresses, "stresses");
 	np::ndarray r = asDoubles(radii, "radii");
 	const long  n = requireShape(r, "radii", {-1}, "a 1-d array");
 	requireShape(s, "stresses", {n, 3, 3}, "an (" + std::to_string(n) + ",3,3) array, one tensor per radius");
 	std::vector<double> tr(n);
-	for (long g = 0; g < n; ++g) tr[g] = dptr(s)[9 * g] + dptr(s)[9 * g + 4] + dptr(s)[9 * g + 8];
+	for (long g = 0; g < n; ++g) {
+		tr[g] = dptr(s)[9 * g] + dptr(s)[9 * g + 4] + dptr(s)[9 * g + 8];
+		requireFiniteResult("stresses", "trace", g, tr[g]);
+	}
 	np::ndarray bound = emptyDoubles({n});
-	abrasionPressureBound(n, tr.data(), dptr(r), rPartner, EstarMax, wptr(bound));
-	return bound;
+	abrasionPressureBound(n, tr.data(), dptr(r), asScalar(rPartner, "rPartner"), asScalar(EstarMax, "EstarMax"), wptr(bound));
+	return finiteResult(bound, "stresses, radii, rPartner, EstarMax", "abrasion pressure bound");
+}
+
+double py_sphereContactBound(const bp::object& maxOverlapRatio, const bp::object& EstarMax)
+{
+	const double b = sphereContactBound(asScalar(maxOverlapRatio, "maxOverlapRatio"), asScalar(EstarMax, "EstarMax"));
+	requireFiniteResult("maxOverlapRatio, EstarMax", "pressure bound", b);
+	return b;
 }
 
 bp::object py_contactModulus(const bp::object& E1, const bp::object& nu1, const bp::object& E2, const bp::object& nu2)
 {
-	return elementwise({{"E1", E1}, {"nu1", nu1}, {"E2", E2}, {"nu2", nu2}},
+	return elementwise({{"E1", E1}, {"nu1", nu1}, {"E2", E2}, {"nu2", nu2}}, "contact modulus",
 	                   [](const double* x) { return contactModulus(x[0], x[1], x[2], x[3]); });
 }
 
 bp::object py_hertzPressureFromForce(const bp::object& Fn, const bp::object& R, const bp::object& Estar)
 {
-	return elementwise({{"Fn", Fn}, {"R", R}, {"Estar", Estar}},
+	return elementwise({{"Fn", Fn}, {"R", R}, {"Estar", Estar}}, "Hertz pressure",
 	                   [](const double* x) { return hertzPressureFromForce(x[0], x[1], x[2]); });
 }
 
 // ---------------------------------------------------------------- fragments (Fig. 1)
 Layout toLayout(const bp::object& pattern)
 {
+	const std::string        expected = "4, 6, 14 or one of 'tetra4', 'planar4', 'octa6', 'fill14'";
 	bp::extract<std::string> asStr(pattern);
 	if (asStr.check()) return layoutFromName(asStr());
-	if (PyBool_Check(pattern.ptr()) || !PyLong_Check(pattern.ptr()))
-		throw TypeError("pattern: expected 4, 6, 14 or one of 'tetra4', 'planar4', 'octa6', 'fill14', got "
-		                + pyStr(bp::object(pattern.attr("__repr__")())));
-	return layoutFromCount(bp::extract<long>(pattern));
+	const bp::object n        = asInteger(pattern, "pattern", expected);
+	int              overflow = 0;
+	const long       v        = PyLong_AsLongAndOverflow(n.ptr(), &overflow);
+	if (overflow) throw ArgumentError("pattern: expected " + expected + ", got " + pyStr(n));
+	return layoutFromCount(v);
 }
 
 np::ndarray spheresToArray(const std::vector<Sphere4>& v)
@@ -338,10 +407,13 @@ std::string py_patternName(const bp::object& pattern) { return layoutName(toLayo
 
 std::uint64_t asSeed(const bp::object& o, const std::string& name)
 {
-	if (PyBool_Check(o.ptr()) || !PyLong_Check(o.ptr())) throw TypeError(name + ": expected an integer >= 0, got " + pyStr(o.attr("__repr__")()));
-	const long long v = bp::extract<long long>(o);
-	if (v < 0) throw ArgumentError(name + ": expected an integer >= 0, got " + std::to_string(v));
-	return (std::uint64_t)v;
+	const bp::object         i = asInteger(o, name, "an integer in [0, 2^64)");
+	const unsigned long long v = PyLong_AsUnsignedLongLong(i.ptr());
+	if (PyErr_Occurred()) {  // negative, or 2^64 and above
+		PyErr_Clear();
+		throw ArgumentError(name + ": expected an integer in [0, 2^64), got " + pyStr(i));
+	}
+	return v;
 }
 
 np::ndarray py_randomRotation(const bp::object& seed, const bp::object& counter)
@@ -357,8 +429,9 @@ np::ndarray py_placeFragments(const bp::object& pattern, const bp::object& centr
 	requireShape(c, "centre", {3}, "a 3-vector");
 	const double r = asScalar(radius, "radius");
 	requirePositive("radius", r);
-	return spheresToArray(placeFragments(layout, Vec3(dptr(c)[0], dptr(c)[1], dptr(c)[2]), r,
-	                                     randomRotation(asSeed(seed, "seed"), asSeed(counter, "counter"))));
+	const Mat3 rot = randomRotation(asSeed(seed, "seed"), asSeed(counter, "counter"));
+	return finiteResult(spheresToArray(placeFragments(layout, Vec3(dptr(c)[0], dptr(c)[1], dptr(c)[2]), r, rot)),
+	                    "centre, radius", "fragment position");
 }
 
 // ---------------------------------------------------------------- harvesting from YADE
@@ -366,17 +439,26 @@ np::ndarray py_placeFragments(const bp::object& pattern, const bp::object& centr
 // same libboost_python, so the C++ matrix is read in place; anything else goes through numpy.
 np::ndarray py_matricesToArray(const bp::object& seq)
 {
-	const long  n   = bp::len(seq);
+	bp::list items;
+	try {
+		items = bp::list(seq);
+	} catch (const bp::error_already_set&) {
+		PyErr_Clear();
+		throw TypeError("matrices: expected a sequence of 3x3 matrices, got " + pyStr(seq.attr("__class__").attr("__name__")));
+	}
+	const long  n   = bp::len(items);
 	np::ndarray out = emptyDoubles({n, 3, 3});
 	double*     o   = wptr(out);
 	for (long i = 0; i < n; ++i) {
-		bp::object                        item = seq[i];
+		bp::object                        item = items[i];
 		bp::extract<const Eigen::Matrix3d&> m(item);
 		if (m.check()) {
 			const Eigen::Matrix3d& M = m();
 			for (int a = 0; a < 3; ++a)
-				for (int b = 0; b < 3; ++b)
+				for (int b = 0; b < 3; ++b) {
+					requireFinite("matrices", i, M(a, b));  // the numpy path checks this in asDoubles
 					o[9 * i + 3 * a + b] = M(a, b);
+				}
 		} else {
 			np::ndarray a = asDoubles(item, "matrices[" + std::to_string(i) + "]");
 			requireShape(a, "matrices[" + std::to_string(i) + "]", {3, 3}, "a 3x3 matrix");
@@ -434,7 +516,7 @@ BOOST_PYTHON_MODULE(_ballast)
 	        "Upper bound of p0 (eq. 7) over the Hertzian contacts of each grain with bodies of radius >= rPartner [m]\n"
 	        "(0: walls and facets), from its fabric stress alone: stresses (N,3,3) [Pa] (eq. 3), radii (N,) [m],\n"
 	        "EstarMax the largest contact modulus [Pa]. Returns (N,) [Pa].");
-	bp::def("sphereContactBound", sphereContactBound, (bp::arg("maxOverlapRatio"), "EstarMax"),
+	bp::def("sphereContactBound", py_sphereContactBound, (bp::arg("maxOverlapRatio"), "EstarMax"),
 	        "Upper bound of p0 (eq. 7) over all Hertzian sphere-sphere contacts, (2 E*/pi) sqrt(2 rho) [Pa], from\n"
 	        "rho = max u_N / (2 R) (utils.maxOverlapRatio()) and the largest contact modulus EstarMax [Pa].");
 	bp::def("contactModulus", py_contactModulus, (bp::arg("E1"), "nu1", "E2", "nu2"),

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "ArgumentMessage.hpp"
 #include "BallastAbrasionEngine.hpp"
 #include "HertzPressure.hpp"
 #include "InputCheck.hpp"
@@ -17,6 +18,8 @@
 using namespace ballast;
 
 namespace {
+
+using ballast_test::messageOf;
 
 const double kPi  = std::acos(-1.0);
 const double kRel = 1e-12;
@@ -169,7 +172,7 @@ TEST(BallastAbrasionEngine, BadInputsThrow)
 			ADD_FAILURE() << "grain index " << bad << " accepted";
 		} catch (const ArgumentError& e) {
 			const std::string m = e.what();
-			EXPECT_NE(m.find("grain index of contact 0"), std::string::npos) << m;
+			EXPECT_EQ(m.rfind("grain2[0]", 0), 0u) << m;  // the argument and the contact
 			EXPECT_NE(m.find(std::to_string(bad)), std::string::npos) << m;
 		}
 	}
@@ -270,6 +273,32 @@ TEST(BallastAbrasionEngine, PressureBoundBadInputs)
 	const double zero = 0.0;
 	abrasionPressureBound(1, &zero, &r, 0.01, 1e11, &b);
 	EXPECT_EQ(b, 0.0);  // an unloaded grain cannot abrade
+}
+
+TEST(BallastAbrasionEngine, PressureBoundRefusesNonFiniteIntermediates)
+{
+	// A trace so large that the largest force 2 |tr| V / r overflows: refused, naming the arrays and the grain.
+	const double r[] = {0.01, 1.0}, tr[] = {-1e6, -1e308};
+	double       b[2];
+	const std::string m = messageOf([&] { abrasionPressureBound(2, tr, r, 0.01, 1e11, b); });
+	EXPECT_EQ(m.rfind("traces, radii:", 0), 0u) << m;
+	EXPECT_NE(m.find("would be inf at index 1"), std::string::npos) << m;
+	// A radius whose volume underflows (V = 0 would give a bound of 0 whatever the stress)
+	const double tiny = 1e-200;
+	const std::string m2 = messageOf([&] { abrasionPressureBound(1, tr, &tiny, 0.01, 1e11, b); });
+	EXPECT_EQ(m2.rfind("radii[0]:", 0), 0u) << m2;
+	EXPECT_NE(m2.find("1e-200"), std::string::npos) << m2;
+}
+
+TEST(BallastAbrasionEngine, BadGrain1IsNamed)
+{
+	std::vector<double>       p0;
+	std::vector<std::uint8_t> ab;
+	Contacts                  c;
+	c.add(0, -1, 10.0, 0.01, 0.0, 1e-6);
+	c.add(3, 0, 10.0, 0.01, 0.01, 1e-6);
+	const std::string m = messageOf([&] { run({1e6, 0.0}, {0.01}, c, p0, ab); });
+	EXPECT_EQ(m.rfind("grain1[1]: expected -1 or 0 <= index < 1, got 3", 0), 0u) << m;
 }
 
 TEST(BallastAbrasionEngine, WallContactBoundUsesTheGrainRadius)

@@ -30,6 +30,29 @@ TEST(FabricStress, SphereVolume)
 	EXPECT_THROW(sphereVolume(-1.0), ArgumentError);
 }
 
+TEST(FabricStress, VolumeThatUnderOrOverflowsIsRefused)
+{
+	// 4/3 pi r^3 is a normal double for about 2e-103 < r < 3e102; beyond, it is 0, subnormal or inf.
+	for (double r : {1e-102, 1e-50, 1e50, 1e102})
+		EXPECT_NEAR(sphereVolume(r), 4.0 / 3.0 * kPi * std::pow(r, 3), kRel * 4.0 / 3.0 * kPi * std::pow(r, 3)) << r;
+	for (double r : {1e-200, 1e-105, 1e103, 1e200}) {
+		const std::string m = messageOf([r] { sphereVolume(r); });
+		EXPECT_EQ(m.rfind("radius:", 0), 0u) << m;
+		EXPECT_NE(m.find(formatValue(r)), std::string::npos) << m;
+		EXPECT_NE(m.find("under- nor overflows"), std::string::npos) << m;
+	}
+	const std::string m = messageOf([] { sphereVolume("radii", 3, 1e-200); });
+	EXPECT_EQ(m.rfind("radii[3]:", 0), 0u) << m;
+	// without the check a grain of radius 1e-200 would get 0/0 = NaN from eq. 3
+	const std::string m2 = messageOf([] {
+		const double radii[] = {0.01, 1e-200};
+		double       out[18];
+		fabricStressMany(2, radii, 0, nullptr, nullptr, nullptr, out);
+	});
+	EXPECT_EQ(m2.rfind("radii[1]:", 0), 0u) << m2;
+	EXPECT_EQ(messageOf([] { fabricStress(1e-200, {}, {}); }).rfind("radius:", 0), 0u);
+}
+
 TEST(FabricStress, DiametralCompression)
 {
 	// Grain squeezed by two opposite forces F along x: contact points +-r e_x, forces on the grain -+F e_x.

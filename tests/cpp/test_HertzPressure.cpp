@@ -88,6 +88,16 @@ TEST(HertzPressure, NoCompressionGivesZero)
 	EXPECT_EQ(hertzPressure(-10.0, R1, 0.0, -1e-6), 0.0);
 }
 
+TEST(HertzPressure, EffectiveRadiusOfExtremeRadiiIsFinite)
+{
+	// R1 R2 / (R1 + R2) taken literally overflows (1e200 * 1e200) or underflows (1e-200 * 1e-200) to inf or 0
+	EXPECT_NEAR(effectiveRadius(1e200, 1e200), 5e199, kRel * 5e199);
+	EXPECT_NEAR(effectiveRadius(1e-200, 1e-200), 5e-201, kRel * 5e-201);
+	EXPECT_NEAR(effectiveRadius(1.7e308, 1.7e308), 8.5e307, kRel * 8.5e307);
+	EXPECT_NEAR(effectiveRadius(1e-200, 1e200), 1e-200, kRel * 1e-200);
+	EXPECT_NEAR(effectiveRadius(3e-200, 1.5e-200), 1e-200, kRel * 1e-200);
+}
+
 TEST(HertzPressure, BadInputsThrow)
 {
 	const double nan = std::numeric_limits<double>::quiet_NaN();

@@ -29,6 +29,7 @@ TEST(InputCheck, FormatValueShortest)
 	EXPECT_EQ(formatValue(std::numeric_limits<double>::infinity()), "inf");
 	EXPECT_EQ(formatValue(-std::numeric_limits<double>::infinity()), "-inf");
 	EXPECT_EQ(formatValue(std::numeric_limits<double>::quiet_NaN()), "nan");
+	EXPECT_EQ(formatValue(-std::numeric_limits<double>::quiet_NaN()), "nan");
 }
 
 TEST(InputCheck, FormatValueRoundTrips)
@@ -69,6 +70,18 @@ TEST(InputCheck, MessagesNameArgumentAndValue)
 	const std::string m4 = messageOf([] { requirePositive("radius", std::numeric_limits<double>::infinity()); });
 	EXPECT_NE(m4.find("radius"), std::string::npos) << m4;
 	EXPECT_NE(m4.find("inf"), std::string::npos) << m4;
+}
+
+TEST(InputCheck, NonFiniteResultNamesTheArgumentsAndTheResult)
+{
+	EXPECT_NO_THROW(requireFiniteResult("Fn, uN", "Hertz pressure", 1.7e308));
+	EXPECT_NO_THROW(requireFiniteResult("Fn, uN", "Hertz pressure", 2, -1.7e308));
+	const double inf = std::numeric_limits<double>::infinity();
+	EXPECT_EQ(messageOf([&] { requireFiniteResult("Fn, uN", "Hertz pressure", inf); }),
+	          "Fn, uN: expected values whose Hertz pressure is finite, the result would be inf");
+	EXPECT_EQ(messageOf([] { requireFiniteResult("sigma", "von Mises stress", 7, std::nan("")); }),
+	          "sigma: expected values whose von Mises stress is finite, the result would be nan at index 7");
+	EXPECT_EQ(messageOf([&] { requireFiniteResult("ft0, radius", "strength", 0, -inf); }).rfind("ft0, radius: ", 0), 0u);
 }
 
 TEST(InputCheck, AcceptsAndRejectsBoundaries)

@@ -222,3 +222,181 @@ def test_bad_input_names_the_argument(call, exc, words):
         call()
     for w in words:
         assert w in str(e.value), (w, str(e.value))
+
+
+# ---------------------------------------------------------------- NumPy scalars and 0-d arrays (issue 15)
+# Every scalar argument of every function, with Python-number keyword arguments that make a valid call:
+# (function, argument, the other arguments, a float value, an int value or None when no int is valid).
+S1 = np.array([squeezed(0.02, 2e3)])
+FRESH = [[0.0, 0.0, 1.0, 0.0]]
+SCALAR_ARGS = [
+    ('fabricStress', 'radius', dict(branches=[[1, 0, 0], [0, 2, 0]], forces=[[3, 0, 1], [0, -1, 0]]), 1.5, 2),
+    ('hertzPressure', 'Fn', dict(R1=0.02, R2=0.01, uN=1e-5), 1.5e3, 1500),
+    ('hertzPressure', 'R1', dict(Fn=1e3, R2=0.01, uN=1e-5), 0.25, 0),
+    ('hertzPressure', 'R2', dict(Fn=1e3, R1=0.01, uN=1e-5), 0.25, 2),
+    ('hertzPressure', 'uN', dict(Fn=1e3, R1=0.01, R2=0.02), 0.5, 1),
+    ('effectiveRadius', 'R1', dict(R2=0.02), 0.5, 1),
+    ('effectiveRadius', 'R2', dict(R1=0.02), 0.5, 0),
+    ('sizeStrength', 'ft0', dict(radius=0.02, m=1.0), 2.5e5, 250000),
+    ('sizeStrength', 'radius', dict(ft0=2e5), 0.125, 3),
+    ('sizeStrength', 'm', dict(ft0=2e5, radius=0.02), 1.5, 2),
+    ('contactModulus', 'E1', dict(nu1=0.3, E2=2e11, nu2=0.25), 3.5e10, 35000000000),
+    ('contactModulus', 'nu1', dict(E1=3e10, E2=2e11, nu2=0.25), 0.25, 0),
+    ('contactModulus', 'E2', dict(E1=3e10, nu1=0.3, nu2=0.25), 2.5e11, 250000000000),
+    ('contactModulus', 'nu2', dict(E1=3e10, nu1=0.3, E2=2e11), -0.5, -1),
+    ('hertzPressureFromForce', 'Fn', dict(R=0.01, Estar=1.6e11), 1.5e4, 15000),
+    ('hertzPressureFromForce', 'R', dict(Fn=1e4, Estar=1.6e11), 0.0625, 1),
+    ('hertzPressureFromForce', 'Estar', dict(Fn=1e4, R=0.01), 1.5e11, 150000000000),
+    ('crushCheck', 'ft0', dict(stresses=S1, radii=[0.02], m=1.0, rMin=0.0), 2.5e2, 250),
+    ('crushCheck', 'm', dict(stresses=S1, radii=[0.02], ft0=2e5, rMin=0.0), 0.5, 2),
+    ('crushCheck', 'rMin', dict(stresses=S1, radii=[0.02], ft0=2e5, m=1.0), 0.03125, 0),
+    ('abrasionCheck', 'strength', dict(radii=[0.02], grain1=[0], grain2=[-1], Fn=[1e3], R1=[0.02], R2=[0.0], uN=[1e-5], rMin=0.0),
+     1.5e8, 150000000),
+    ('abrasionCheck', 'rMin', dict(radii=[0.02], grain1=[0], grain2=[-1], Fn=[1e3], R1=[0.02], R2=[0.0], uN=[1e-5], strength=1e8),
+     0.03125, 0),
+    ('fatigueCheck', 'exponent', dict(ratio=[0.5], radii=[0.02], state=FRESH, endurance=0.5, hysteresis=0.1, rMin=0.0), 2.5, 8),
+    ('fatigueCheck', 'endurance', dict(ratio=[0.5], radii=[0.02], state=FRESH, exponent=2.0, hysteresis=0.1, rMin=0.0), 0.5, 0),
+    ('fatigueCheck', 'hysteresis', dict(ratio=[0.5], radii=[0.02], state=FRESH, exponent=2.0, endurance=0.5, rMin=0.0), 0.25, None),
+    ('fatigueCheck', 'rMin', dict(ratio=[0.5], radii=[0.02], state=FRESH, exponent=2.0, endurance=0.5, hysteresis=0.1), 0.03125, 0),
+    ('abrasionBound', 'rPartner', dict(stresses=S1, radii=[0.02], EstarMax=1.6e11), 0.0078125, 0),
+    ('abrasionBound', 'EstarMax', dict(stresses=S1, radii=[0.02], rPartner=0.005), 1.5e11, 150000000000),
+    ('sphereContactBound', 'maxOverlapRatio', dict(EstarMax=1.6e11), 0.0009765625, 0),
+    ('sphereContactBound', 'EstarMax', dict(maxOverlapRatio=1e-3), 1.5e11, 150000000000),
+    ('placeFragments', 'radius', dict(pattern=6, centre=[0.1, 0.2, 0.3], seed=1, counter=2), 0.015625, 1),
+]
+# (dtype, 0-d): a NumPy scalar of that type, or a 0-d array of it
+FLOAT_TYPES = [(t, d) for t in (np.float16, np.float32, np.float64, np.longdouble) for d in (False, True)]
+INT_TYPES = [(t, d) for t in (np.int8, np.int16, np.int32, np.int64, np.uint8, np.uint16, np.uint32, np.uint64)
+             for d in (False, True)]
+
+
+def numpyNumber(type_, zeroD, value):
+    return np.array(value, dtype=type_) if zeroD else type_(value)
+
+
+def typeId(t):
+    return t[0].__name__ + ('-0d' if t[1] else '')
+
+
+def holds(type_, value):
+    """Whether the NumPy type holds value exactly (np.float16 cannot hold 1.5e11, np.int8 not 250000)."""
+    if np.issubdtype(type_, np.integer):
+        return np.iinfo(type_).min <= value <= np.iinfo(type_).max
+    with np.errstate(over='ignore'):
+        return float(type_(value)) == value
+
+
+def assert_same_result(a, b):
+    """Results of two calls are equal, value and type (a float stays a float)."""
+    assert type(a) is type(b)
+    if isinstance(a, tuple):
+        for x, y in zip(a, b):
+            np.testing.assert_array_equal(x, y)
+    else:
+        np.testing.assert_array_equal(a, b)
+
+
+@pytest.mark.parametrize('fn,arg,others,value,type_', [
+    pytest.param(fn, arg, others, v, t, id='%s-%s-%s' % (fn, arg, typeId(t)))
+    for fn, arg, others, x, i in SCALAR_ARGS
+    for t, v in [(t, x) for t in FLOAT_TYPES] + [(t, i) for t in INT_TYPES]
+    if v is not None and holds(t[0], v)])
+def test_numpy_scalars_and_0d_arrays_are_numbers(fn, arg, others, value, type_):
+    f = getattr(ballast, fn)
+    assert_same_result(f(**others, **{arg: numpyNumber(*type_, value)}), f(**others, **{arg: value}))
+
+
+@pytest.mark.parametrize('type_', INT_TYPES, ids=typeId)
+@pytest.mark.parametrize('call', [
+    lambda n: ballast.fragmentPattern(n(6)),
+    lambda n: ballast.fragmentPattern(n(14)),
+    lambda n: ballast.keptVolumeFraction(n(4)),
+    lambda n: ballast.patternName(n(6)),
+    lambda n: ballast.randomRotation(n(42), n(7)),
+    lambda n: ballast.placeFragments(n(4), [0.1, 0.2, 0.3], 0.02, n(42), n(7)),
+], ids=['fragmentPattern6', 'fragmentPattern14', 'keptVolumeFraction', 'patternName', 'randomRotation', 'placeFragments'])
+def test_numpy_integers_are_integers(call, type_):
+    assert_same_result(call(lambda v: numpyNumber(*type_, v)), call(int))
+
+
+def test_seed_takes_the_whole_uint64_range():
+    top = 2 ** 64 - 1
+    np.testing.assert_array_equal(ballast.randomRotation(np.uint64(top), 0), ballast.randomRotation(top, 0))
+    assert not np.allclose(ballast.randomRotation(top, 0), ballast.randomRotation(top - 1, 0))
+
+
+def test_fabric_stress_of_huge_values_that_stay_finite():
+    # no overflow below the double range: the effective radius of two huge radii, a grain of radius 1e100
+    assert ballast.effectiveRadius(1e200, 1e200) == pytest.approx(5e199, rel=1e-15)
+    assert ballast.effectiveRadius(1e-200, 1e-200) == pytest.approx(5e-201, rel=1e-15)
+    r = 1e100
+    assert squeezed(r, 1e150)[0, 0] == pytest.approx(-3 * 1e150 / (2 * math.pi * r ** 2), rel=1e-12)
+
+
+BIG = np.diag([1e200, 0, 0])
+UINT_TOP = np.array([2 ** 64 - 1], dtype=np.uint64)
+
+
+@pytest.mark.parametrize('call,exc,words', [
+    # integers the code takes: Python ints and NumPy integers only, in range
+    (lambda: ballast.fragmentPattern(np.int64(5)), ValueError, ['pattern', 'got 5']),
+    (lambda: ballast.fragmentPattern(np.float64(6)), TypeError, ['pattern', '6.0']),
+    (lambda: ballast.fragmentPattern(np.True_), TypeError, ['pattern', 'True']),
+    (lambda: ballast.fragmentPattern(np.array([6])), TypeError, ['pattern', 'array([6])']),
+    (lambda: ballast.fragmentPattern(2 ** 70), ValueError, ['pattern', str(2 ** 70)]),
+    (lambda: ballast.randomRotation(2 ** 64, 0), ValueError, ['seed', str(2 ** 64), '2^64']),
+    (lambda: ballast.randomRotation(0, np.int64(-1)), ValueError, ['counter', '-1']),
+    (lambda: ballast.randomRotation(np.float32(1), 0), TypeError, ['seed']),
+    (lambda: ballast.randomRotation(0, True), TypeError, ['counter', 'True']),
+    (lambda: ballast.placeFragments(6, [0, 0, 0], 1.0, 1, np.array(2.0)), TypeError, ['counter']),
+    (lambda: ballast.grainStresses([1.0], UINT_TOP, [[1, 0, 0]], [[1, 0, 0]]), ValueError,
+     ['grainIndex', '18446744073709551615', '2^63']),
+    (lambda: ballast.abrasionCheck([0.01], UINT_TOP, [-1], [1.0], [0.01], [0.0], [1e-6], 1.0, 0.0), ValueError,
+     ['grain1', '18446744073709551615']),
+    (lambda: ballast.abrasionCheck([0.01], [0], [1], [1.0], [0.01], [0.0], [1e-6], 1.0, 0.0), ValueError,
+     ['grain2[0]', '-1 or 0 <= index < 1', 'got 1']),
+    # numbers: one each, finite, real
+    (lambda: ballast.crushCheck(S1, [0.02], np.array([2e5, 1.0]), 1.0, 0.0), TypeError, ['ft0', 'shape (2,)']),
+    (lambda: ballast.crushCheck(S1, [0.02], 2e5, np.float64('nan'), 0.0), ValueError, ['m', 'nan']),
+    (lambda: ballast.crushCheck(S1, [0.02], 2e5, 1.0, np.float32('inf')), ValueError, ['rMin', 'inf']),
+    (lambda: ballast.crushCheck(S1, [0.02], 'a', 1.0, 0.0), TypeError, ['ft0', 'dtype']),
+    (lambda: ballast.crushCheck(S1, [0.02], np.complex128(1), 1.0, 0.0), TypeError, ['ft0', 'complex']),
+    (lambda: ballast.fatigueCheck([0.5], [0.02], FRESH, np.True_, 0.5, 0.1, 0.0), TypeError, ['exponent', 'bool']),
+    (lambda: ballast.abrasionBound(S1, [0.02], np.array([0.0]), 1e11), TypeError, ['rPartner', 'shape (1,)']),
+    (lambda: ballast.sphereContactBound(np.float64('nan'), 1e11), ValueError, ['maxOverlapRatio', 'nan']),
+    (lambda: ballast.sphereContactBound(1e-3, None), TypeError, ['EstarMax', 'object']),
+    (lambda: ballast.matricesToArray(5), TypeError, ['matrices', 'sequence']),
+    (lambda: ballast.matricesToArray([np.eye(3), np.full((3, 3), np.nan)]), ValueError, ['matrices[1]', 'nan']),
+    # results that would not be finite
+    (lambda: ballast.fabricStress(1e-200, [[1, 0, 0]], [[1, 0, 0]]), ValueError, ['radius', '1e-200', 'overflows']),
+    (lambda: ballast.fabricStress(1e103, [[1, 0, 0]], [[1, 0, 0]]), ValueError, ['radius', '1e+103', 'overflows']),
+    (lambda: ballast.fabricStress(1e-100, [[1, 0, 0]], [[1e100, 0, 0]]), ValueError,
+     ['radius, branches, forces', 'fabric stress is finite', 'would be inf']),
+    (lambda: ballast.grainStresses([1.0, 1e-200], [0], [[1, 0, 0]], [[1, 0, 0]]), ValueError, ['radii[1]', '1e-200']),
+    (lambda: ballast.grainStresses([1.0, 1e-100], [1], [[1, 0, 0]], [[1e100, 0, 0]]), ValueError,
+     ['radii, branches, forces', 'would be inf at index 1']),
+    (lambda: ballast.vonMises(BIG), ValueError, ['sigma', 'von Mises stress is finite', 'would be inf']),
+    (lambda: ballast.vonMises([np.eye(3), BIG]), ValueError, ['sigma', 'would be inf at index 1']),
+    (lambda: ballast.principalStresses(np.full((3, 3), 1.7e308)), ValueError, ['sigma', 'principal stress', 'would be nan']),
+    (lambda: ballast.hertzPressure(1e300, 1e-10, 0, 1e-300), ValueError, ['Fn, R1, R2, uN', 'would be inf']),
+    (lambda: ballast.hertzPressure([1.0, 1e300], 1e-10, 0, 1e-290), ValueError, ['Fn, R1, R2, uN', 'inf at index 1']),
+    (lambda: ballast.sizeStrength(1e300, 1e-100, 5), ValueError, ['ft0, radius, m', 'would be inf']),
+    (lambda: ballast.contactModulus(1.0, -1.0, 1.0, -1.0), ValueError, ['E1, nu1, E2, nu2', 'would be inf']),
+    (lambda: ballast.hertzPressureFromForce(1.0, 1e-200, 1e11), ValueError, ['Fn, R, Estar', 'would be inf']),
+    (lambda: ballast.crushCheck(np.array([BIG]), [0.02], 2e5, 1.0, 0.0), ValueError, ['stresses', 'von Mises', 'inf at index 0']),
+    (lambda: ballast.crushCheck(S1, [1e-100], 1e300, 5.0, 0.0), ValueError, ['ft0, radii, m', 'inf at index 0']),
+    (lambda: ballast.abrasionCheck([0.01], [0], [-1], [1e300], [0.01], [0.0], [1e-300], 1.0, 0.0), ValueError,
+     ['Fn, R1, R2, uN', 'would be inf']),
+    (lambda: ballast.fatigueCheck([0.0], [0.02], [[0, 1e10, 1, 0]], 100, 0.5, 0.1, 0.0), ValueError,
+     ['ratio, state, exponent', 'fatigue damage', 'would be inf at index 0']),
+    (lambda: ballast.abrasionBound(np.full((1, 3, 3), 1e308), [1.0], 0.0, 1e11), ValueError, ['stresses', 'trace', 'inf']),
+    (lambda: ballast.abrasionBound(-np.eye(3)[None] * 1e300, [1.0], 0.0, 1e11), ValueError, ['radii', 'would be inf']),
+    (lambda: ballast.abrasionBound(S1, [0.02], 0.0, 1e200), ValueError, ['EstarMax', 'would be inf']),
+    (lambda: ballast.sphereContactBound(1e308, 1e308), ValueError, ['maxOverlapRatio, EstarMax', 'would be inf']),
+    (lambda: ballast.placeFragments(6, [1.7e308, 0, 0], 1e308, 1, 1), ValueError, ['centre, radius', 'would be inf']),
+])
+def test_bad_numbers_and_non_finite_results_name_the_argument(call, exc, words):
+    with pytest.raises(exc) as e:
+        call()
+    for w in words:
+        assert w in str(e.value), (w, str(e.value))
