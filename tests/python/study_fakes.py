@@ -5,12 +5,13 @@
 
 builds the packing its row needs when it is not stored, and writes DIR/ID/summary.json, fd.csv and
 seen.json (what it was given). The environment variable FAKE (a '!FAKE' column of the table) makes
-it fail (exit 3, leaving a partial output), hang (with a child process), or end without a summary."""
+it fail (exit 3, leaving a partial output), hang (with a child process; both pids in pids.json),
+end without a summary, with a summary cut in half (exit 0 both), or be killed by SIGKILL mid-run."""
 import os
 import socket
 
 FAKE_YADE = r'''#!/usr/bin/python3
-import json, os, subprocess, sys, time
+import json, os, signal, subprocess, sys, time
 from ballast.oedometer.parameters import check, packingKey
 
 argv = sys.argv[1:]
@@ -34,10 +35,20 @@ if mode == 'fail':
     print('RuntimeError: the fake failed on purpose')
     sys.exit(3)
 if mode == 'hang':
-    subprocess.Popen(['sleep', '120'])
+    helper = subprocess.Popen(['sleep', '120'])
+    with open(os.path.join(out, 'pids.json.tmp'), 'w') as fh:
+        json.dump({'yade': os.getpid(), 'helper': helper.pid}, fh)
+    os.replace(os.path.join(out, 'pids.json.tmp'), os.path.join(out, 'pids.json'))
     time.sleep(120)
 if mode == 'nosummary':
     sys.exit(0)
+if mode == 'truncated':
+    with open(os.path.join(out, 'summary.json'), 'w') as fh:
+        fh.write(json.dumps({'params': p, 'peakForce': 1000.})[:20])
+    sys.exit(0)
+if mode == 'killed':
+    print('step 1200, t = 0.12 s', flush=True)  # a progress line: not why it ended
+    os.kill(os.getpid(), signal.SIGKILL)
 packing = os.path.join(opts['--packingDir'], packingKey(p)[1])
 if not os.path.exists(packing):
     with open(packing + '.tmp', 'w') as fh:

@@ -1,11 +1,15 @@
 """Tests of ballast.study.executors with a stand-in for runner.runRow (no process starts): a run that
 builds a packing goes before the runs waiting for it, which get its result, locally and through an
-in-process Dask cluster; the executor the command line asks for, its options checked."""
+in-process Dask cluster; the executor the command line asks for, its options checked; stopped
+(Ctrl-C), the result of the run it stopped goes to onDone (the journal), the runs queued do not start."""
+import os
+import signal
 import threading
 import time
 
 import pytest
 
+from ballast.study import runner
 from ballast.study.executors import DaskExecutor, LocalExecutor, makeExecutor
 from ballast.study.options import StudyError
 from study_fakes import freePort
@@ -53,6 +57,42 @@ def test_dask_executor_does_the_same_through_a_scheduler():
         ex = DaskExecutor(cluster.scheduler_address, 10, runRow=runRow)
         assert ex.slots == 2 and ex.describe().startswith('1 workers, 2 threads')
         runAll(ex)
+
+
+def stoppingRow(spec, leader):
+    """A presses Ctrl-C and runs until the stop reaches it; B, queued behind it, must not start."""
+    stopped = runner.stopRequested(spec)
+    if stopped():
+        return None
+    with LOCK:
+        EVENTS.append(('start', spec['runId'], None))
+    time.sleep(0.3)  # the executor is waiting for results by then
+    os.kill(os.getpid(), signal.SIGINT)
+    while not stopped():
+        time.sleep(0.02)
+    return {'runId': spec['runId'], 'status': 'stopped', 'packings': {}, 'files': None}
+
+
+@pytest.mark.parametrize('kind', ['local', 'dask'])
+def test_a_stopped_study_hands_on_the_runs_it_stopped(kind, monkeypatch):
+    EVENTS.clear()
+    done = []
+    twoRuns = [{'spec': {'runId': r, 'line': n}, 'leader': None} for n, r in enumerate('AB', 2)]
+    try:
+        if kind == 'local':
+            with pytest.raises(KeyboardInterrupt):
+                LocalExecutor(1, runRow=stoppingRow).run(twoRuns, lambda t, res: done.append(res), lambda t, quiet=False: None)
+        else:
+            distributed = pytest.importorskip('distributed')
+            monkeypatch.setattr(runner, 'ASK_DASK', 0.05)  # the workers are threads of this process
+            with distributed.LocalCluster(n_workers=1, threads_per_worker=1, processes=False, dashboard_address=None) as cluster:
+                with pytest.raises(KeyboardInterrupt):
+                    DaskExecutor(cluster.scheduler_address, 10, runRow=stoppingRow).run(
+                        twoRuns, lambda t, res: done.append(res), lambda t, quiet=False: None)
+    finally:
+        runner.STOP.clear()
+    assert [(r['runId'], r['status']) for r in done] == [('A', 'stopped')]
+    assert EVENTS == [('start', 'A', None)]
 
 
 @pytest.mark.parametrize('kw, words', [

@@ -1,14 +1,22 @@
 """Tests of ballast.study.runner: one run of a table row, with a stand-in for yade (study_fakes.py)
 that keeps the oedometer's command-line contract, so no simulation runs. A run that finishes, one
 that fails, one past its --timeout, one stopped; shipped to a worker that does not see the study
-directory and written back; the log line that says why."""
+directory and written back; the log line that says why. Robustness: a runner killed (SIGKILL)
+leaves no simulation running, a restart does not run a row another runner holds, a run killed by a
+signal says so, a cut summary.json is no finished run, results are synced before they are renamed."""
+import glob
 import json
 import os
+import signal
+import subprocess
+import sys
+import threading
+import time
 
 import pytest
 
 from ballast.study import runner
-from ballast.study.files import codeSha1
+from ballast.study.files import codeSha1, readSummary, writeAtomic
 from study_fakes import writeFakeYade
 
 TABLE = 'seed f\n1 2\n'
@@ -69,7 +77,37 @@ def test_a_failed_run_keeps_what_it_left_until_it_succeeds(spec):
 def test_exit_zero_without_a_summary_is_a_failure(spec):
     os.makedirs(spec['packings'])
     res = runner.runRow(dict(spec, env={'FAKE': 'nosummary'}))
-    assert res['status'] == 'failed' and res['rc'] == 0 and 'fake yade' in res['error']
+    assert res['status'] == 'failed' and res['rc'] == 0 and res['error'] == 'exit code 0 but no summary.json'
+
+
+def test_a_cut_summary_is_not_a_finished_run(spec):
+    os.makedirs(spec['packings'])
+    res = runner.runRow(dict(spec, env={'FAKE': 'truncated'}))
+    assert res['status'] == 'failed' and res['rc'] == 0 and res['summary'] is None, res
+    assert res['error'].startswith('exit code 0 but summary.json is not JSON (cut short?): ')
+    assert not os.path.exists(os.path.join(spec['out'], 'runs', spec['runId']))
+    assert os.path.exists(os.path.join(spec['out'], 'failed', spec['runId'], 'summary.json'))
+
+
+@pytest.mark.parametrize('text, why', [
+    (None, 'no summary.json'),
+    ('{"peakForce": 2001.0, "deltaAt',
+     'summary.json is not JSON (cut short?): Unterminated string starting at: line 1 column 23 (char 22)'),
+    ('[2001.0]', 'summary.json holds a list, not a JSON object'),
+    ('{"peakForce": 2001.0}', None)])
+def test_the_check_of_a_finished_run_says_why_it_fails(tmp_path, text, why):
+    if text is not None:
+        (tmp_path / 'summary.json').write_text(text)
+    summary, said = readSummary(str(tmp_path))
+    assert said == why and (summary == {'peakForce': 2001.0}) == (why is None)
+
+
+def test_a_run_killed_by_a_signal_says_so_not_its_last_line(spec):
+    os.makedirs(spec['packings'])
+    res = runner.runRow(dict(spec, env={'FAKE': 'killed'}))
+    assert res['status'] == 'failed' and res['rc'] == -9 and res['error'] == 'killed by signal 9', res
+    assert os.path.isdir(os.path.join(spec['out'], 'failed', spec['runId']))
+    assert 'status  : -9 (FAILED)' in open(os.path.join(spec['out'], 'logs', spec['runId'] + '.log')).read()
 
 
 def processGone(pid):
@@ -84,9 +122,11 @@ def processGone(pid):
 def test_a_run_past_its_timeout_or_stopped_is_killed_with_its_children(spec, why):
     os.makedirs(spec['packings'])
     if why == 'stopped':
-        runner.STOP.set()
+        threading.Timer(0.3, runner.STOP.set).start()
     try:
         res = runner.runRow(dict(spec, env={'FAKE': 'hang'}, timeout=0.3 if why == 'timeout' else None))
+        if why == 'stopped':
+            assert runner.runRow(spec) is None  # the study stopped before this run's turn: it does not start
     finally:
         runner.STOP.clear()
     assert res['status'] == why and res['rc'] < 0, res  # killed by a signal
@@ -97,6 +137,124 @@ def test_a_run_past_its_timeout_or_stopped_is_killed_with_its_children(spec, why
     assert os.path.isdir(os.path.join(spec['out'], 'failed', spec['runId'])) == (why == 'timeout')
     ps = [l.split() for l in os.popen('ps -eo pid,args').read().splitlines()[1:]]
     assert not [p for p in ps if p[1:] == ['sleep', '120'] and not processGone(int(p[0]))]
+
+
+def childrenOf(pid):
+    kids = []
+    for d in os.listdir('/proc'):
+        try:
+            with open('/proc/%s/stat' % d) as fh:
+                if int(fh.read().rsplit(')', 1)[1].split()[1]) == pid:
+                    kids.append(int(d))
+        except (OSError, ValueError, IndexError):
+            pass
+    return kids
+
+
+def waitUntil(test, seconds):
+    end = time.time() + seconds
+    while not test() and time.time() < end:
+        time.sleep(0.05)
+    return test()
+
+
+@pytest.mark.parametrize('killed', ['runner', 'runner and watchdog'])
+def test_a_runner_killed_by_sigkill_leaves_no_simulation_running(spec, killed):
+    """The runner, in a process of its own, runs a fake yade that hangs with a helper process, and is
+    killed by SIGKILL: yade and its helper die with it (the helper by the watchdog). With the watchdog
+    killed first, yade still dies, by its parent-death signal. A restart then clears what the dead
+    attempt left and has a journal record of it."""
+    os.makedirs(spec['packings'])
+    code = 'import json, sys; from ballast.study import runner; runner.runRow(json.loads(sys.argv[1]))'
+    proc = subprocess.Popen([sys.executable, '-c', code, json.dumps(dict(spec, env={'FAKE': 'hang'}))])
+    pids = {}
+
+    def found():
+        return glob.glob(os.path.join(spec['out'], 'work', '*', 'results', '*', 'pids.json'))
+    try:
+        assert waitUntil(found, 20), 'the fake yade did not start'
+        with open(found()[0]) as fh:
+            pids = json.load(fh)
+        watchdog = [p for p in childrenOf(proc.pid) if p != pids['yade']]
+        assert len(watchdog) == 1 and pids['yade'] in childrenOf(proc.pid)
+        if killed == 'runner and watchdog':
+            os.kill(watchdog[0], signal.SIGKILL)
+        os.kill(proc.pid, signal.SIGKILL)
+        proc.wait(10)
+        assert waitUntil(lambda: processGone(pids['yade']), 5), 'yade outlived its runner'
+        if killed == 'runner':
+            assert waitUntil(lambda: processGone(pids['helper']), 5), "yade's helper outlived the runner"
+            work = os.path.join(spec['out'], 'work')
+            [rec] = runner.clearWork(work)
+            assert rec['runId'] == spec['runId'] and rec['status'] == 'started'
+            assert rec['error'].endswith('its log ends: fake yade: run seed=1,f=2, mode hang')
+            assert os.listdir(work) == []
+    finally:
+        for pid in [proc.pid] + list(pids.values()):
+            if not processGone(pid):
+                os.kill(pid, signal.SIGKILL)
+
+
+def test_a_restart_does_not_run_a_row_another_runner_holds(spec):
+    """Another runner holds the row's lock (a process of its own): the row is not run and the folder of
+    its attempt stays, also when the study starts again and clears what dead attempts left."""
+    os.makedirs(spec['packings'])
+    work = os.path.join(spec['out'], 'work')
+    code = ('import sys; from ballast.study import runner; lock = runner.rowLock(*sys.argv[1:]); print(bool(lock), flush=True); '
+            'sys.stdin.read()')
+    holder = subprocess.Popen([sys.executable, '-c', code, work, spec['runId']], stdin=subprocess.PIPE, stdout=subprocess.PIPE)
+    try:
+        assert holder.stdout.readline() == b'True\n'
+        os.makedirs(os.path.join(work, spec['runId'] + '.held1234'))  # the attempt going on there
+        os.makedirs(os.path.join(work, 'seed=2,f=2.dead1234'))  # one of a runner that died, and its lock
+        open(os.path.join(work, 'seed=2,f=2.lock'), 'w').close()
+        res = runner.runRow(spec)
+        assert res['status'] == 'elsewhere' and res['error'] == 'running elsewhere: another runner holds %s' % os.path.join(
+            work, spec['runId'] + '.lock')
+        assert sorted(os.listdir(spec['out'])) == ['.study-token', 'work']  # nothing run, no log, no result
+        assert [r['runId'] for r in runner.clearWork(work)] == ['seed=2,f=2']
+        assert sorted(os.listdir(work)) == [spec['runId'] + '.held1234', spec['runId'] + '.lock']
+    finally:
+        holder.stdin.close()
+        holder.wait(10)
+    assert runner.runRow(spec)['status'] == 'ok'  # let go: the row runs
+    assert os.listdir(work) == [spec['runId'] + '.held1234']  # its lock removed as it let go; the rest is the next start's
+
+
+def test_results_are_synced_before_they_are_renamed_into_place(spec, tmp_path, monkeypatch):
+    """Every file and directory of a run and its log are fsynced before the rename, the directory
+    they go to after it; so are the files written atomically."""
+    events = []
+    fsync, replace = os.fsync, os.replace
+
+    def recordFsync(fd):
+        events.append(('fsync', os.readlink('/proc/self/fd/%d' % fd)))
+        fsync(fd)
+
+    def recordReplace(src, dst):
+        replace(src, dst)
+        events.append(('replace', src, dst))
+    monkeypatch.setattr(os, 'fsync', recordFsync)
+    monkeypatch.setattr(os, 'replace', recordReplace)
+    attempt = tmp_path / 'attempt'
+    (attempt / 'run' / 'vtk').mkdir(parents=True)
+    files = [attempt / 'run' / 'summary.json', attempt / 'run' / 'vtk' / 'a.vtu', attempt / 'run.log']
+    for f in files:
+        f.write_text('{}')
+    out = spec['out']
+    runner.finalize(out, spec['runId'], {'status': 'ok'}, str(attempt / 'run'), str(attempt / 'run.log'))
+    writeAtomic(os.path.join(out, 'status.csv'), 'line\n')
+
+    def at(event):
+        return events.index(event)
+    run, log = os.path.join(out, 'runs', spec['runId']), os.path.join(out, 'logs', spec['runId'] + '.log')
+    moved = at(('replace', str(attempt / 'run'), run))
+    for p in files[:2] + [attempt / 'run' / 'vtk', attempt / 'run']:
+        assert at(('fsync', str(p))) < moved, p
+    assert at(('fsync', os.path.join(out, 'runs'))) > moved
+    assert at(('fsync', str(files[2]))) < at(('replace', str(files[2]), log)) < at(('fsync', os.path.join(out, 'logs')))
+    tmp = [e[1] for e in events if e[0] == 'replace' and e[2] == os.path.join(out, 'status.csv')]
+    assert at(('fsync', tmp[0])) < at(('replace', tmp[0], os.path.join(out, 'status.csv'))) < at(('fsync', out))
 
 
 def test_shipped_run_comes_back_and_is_written_by_the_client(spec, tmp_path):

@@ -1,12 +1,16 @@
 """Tests of ballast.study.study (class Study: checks before any run, which run builds a shared
-packing, bookkeeping, restart, status) with a stand-in for yade (study_fakes.py): no simulation."""
+packing, bookkeeping, restart, status) with a stand-in for yade (study_fakes.py): no simulation.
+Every attempt in the journal (stopped, or left by a runner that died); a cut summary.json is no
+finished run, for the study and the aggregation alike."""
 import csv
 import json
 import os
+import signal
+import threading
 
 import pytest
 
-from ballast.study import LocalExecutor, Study, status
+from ballast.study import LocalExecutor, Study, StudyData, runner, status
 from ballast.study.files import codeSha1
 from ballast.study.options import StudyError
 from study_fakes import writeFakeYade
@@ -125,3 +129,48 @@ def test_a_stored_packing_needs_no_leader_and_goes_with_the_task(setup):
     assert [t['leader'] for t in tasks] == [None, None, None]
     assert tasks[0]['spec']['packingFiles'] == {s.packingName(2): b'{"grains": []}'} and tasks[2]['spec']['packingFiles'] == {}
     assert tasks[2]['spec']['env'] == {'OMP_NUM_THREADS': '1', 'FAKE': 'fail'}  # yade-batch's !COLUMNS
+
+
+def test_a_stopped_run_and_one_a_dead_runner_left_are_in_the_journal(setup, tmp_path, capsys):
+    """Ctrl-C while the run of line 2 goes on: the study stops it and journals it; a folder in work/
+    (an attempt of a runner that died) is removed and journaled as started when the study starts."""
+    (tmp_path / 'tiny.table').write_text('seed! f! !FAKE\n1 2 hang\n')
+    dead = os.path.join(setup['out'], 'work', IDS[0] + '.deadbeef')
+    os.makedirs(dead)
+    with open(os.path.join(dead, 'run.log'), 'w') as fh:
+        fh.write('fake yade: run seed=1,f=2\nstep 1200\n')
+
+    def pressCtrlC(spec, leader):
+        threading.Timer(0.5, os.kill, (os.getpid(), signal.SIGINT)).start()
+        return runner.runRow(spec, leader)
+    try:
+        assert study(setup).run(LocalExecutor(1, runRow=pressCtrlC)) == 130
+    finally:
+        runner.STOP.clear()
+    said = capsys.readouterr().out
+    assert 'removed 1 unfinished attempt(s)' in said and 'interrupted: 0 ok, 0 failed' in said
+    with open(os.path.join(setup['out'], 'journal.jsonl')) as fh:
+        records = [json.loads(l) for l in fh]
+    assert [(r['runId'], r['line'], r['status']) for r in records] == [(IDS[0], 2, 'started'), (IDS[0], 2, 'stopped')]
+    assert records[0]['error'].endswith('its log ends: step 1200')
+    assert records[1]['error'] == 'stopped (the study was interrupted)'
+    assert statusRows(setup['out'])[IDS[0]]['status'] == 'stopped'
+    assert os.listdir(os.path.join(setup['out'], 'work')) == []
+
+
+def test_a_cut_summary_is_not_finished_for_the_study_nor_the_aggregation(setup, capsys):
+    out = setup['out']
+    study(setup, lines='2,3').run(LocalExecutor(1))
+    path = os.path.join(out, 'runs', IDS[0], 'summary.json')
+    with open(path) as fh:
+        text = fh.read()
+    with open(path, 'w') as fh:
+        fh.write(text[:len(text) // 2])  # as a crash before the data reached the disk leaves it
+    assert study(setup).finishedRow(2) is None and study(setup).finishedRow(3) is not None
+    assert StudyData(out, 'f').missing == [IDS[0], IDS[2]]
+    capsys.readouterr()
+    status(out)
+    assert '3 rows: 1 finished, 2 todo' in capsys.readouterr().out
+    assert study(setup, lines='2').run(LocalExecutor(1)) == 0  # run again: the cut one replaced
+    with open(path) as fh:
+        assert json.load(fh)['peakForce'] == 2001.0

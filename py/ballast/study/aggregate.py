@@ -16,6 +16,7 @@ import os
 
 import numpy as np
 
+from .files import readSummary
 from .options import StudyError
 from .table import cellValue
 
@@ -77,10 +78,8 @@ class StudyData:
         self.runs, self.missing = [], []
         for r in rows:
             d = os.path.join(self.dir, 'runs', r['runId'])
-            try:
-                with open(os.path.join(d, 'summary.json')) as fh:
-                    s = json.load(fh)
-            except (OSError, ValueError):
+            s, _ = readSummary(d)
+            if s is None:
                 self.missing.append(r['runId'])
                 continue
             params = s.get('params') or {}

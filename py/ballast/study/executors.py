@@ -2,7 +2,8 @@
 Dask scheduler (:class:`DaskExecutor`). Both take the tasks of :meth:`Study.tasks` in order, a run
 that builds a packing before the runs waiting for it, call onStart(task) and onDone(task, result),
 and run each task with ``runRow(spec, leaderResult)`` (:func:`ballast.study.runner.runRow`, or any
-function of that signature)."""
+function of that signature). Stopped (Ctrl-C), both hand the results of the runs it stopped to
+onDone before they raise KeyboardInterrupt: every attempt is in the journal."""
 import os
 import re
 import shutil
@@ -57,16 +58,30 @@ class LocalExecutor:
                             start(d, res)
         except KeyboardInterrupt:
             runner.STOP.set()  # every running run kills its yade, queued ones do not start
-            for fut in running:
-                fut.cancel()
+            for fut, t in running.items():
+                if not fut.cancel():  # started: its result comes once its yade is killed
+                    res = fut.result()
+                    if res is not None:
+                        onDone(t, res)
             raise
         finally:
             pool.shutdown(wait=True)
 
 
 def leaderPackings(res):
-    """What a run waiting for a leader's packing needs of the leader's result."""
-    return {'packings': res.get('packings') or {}}
+    """What a run waiting for a leader's packing needs of the leader's result (None: the leader did
+    not start, the study was stopped)."""
+    return {'packings': (res or {}).get('packings') or {}}
+
+
+def taskResult(fut, t):
+    """The result of a Dask task of runRow; a failed run if the task failed in Dask, not in yade."""
+    try:
+        return fut.result()
+    except Exception as e:  # e.g. KilledWorker: the worker died running it, too often
+        return {'runId': t['spec']['runId'], 'line': t['spec']['line'], 'status': 'failed', 'rc': None, 'host': '?',
+                'error': 'Dask: %s: %s' % (type(e).__name__, e), 'wall': None, 'shared': False, 'files': {}, 'packings': {},
+                'log': 'the task failed in Dask, not in yade: %s: %s\n' % (type(e).__name__, e), 'summary': None}
 
 
 class DaskExecutor:
@@ -127,23 +142,26 @@ class DaskExecutor:
             futures[fut] = t
             byId[t['spec']['runId']] = fut
             onStart(t, quiet=True)
+        pending = dict(futures)  # the tasks whose result has not been handed to onDone
         try:
             for fut in as_completed(list(futures), loop=self.client.loop):
-                t = futures[fut]
-                try:
-                    res = fut.result()
-                except Exception as e:  # e.g. KilledWorker: the worker died running it, too often
-                    res = {'runId': t['spec']['runId'], 'line': t['spec']['line'], 'status': 'failed', 'rc': None, 'host': '?',
-                           'error': 'Dask: %s: %s' % (type(e).__name__, e), 'wall': None, 'shared': False, 'files': {},
-                           'packings': {}, 'log': 'the task failed in Dask, not in yade: %s: %s\n' % (type(e).__name__, e),
-                           'summary': None}
-                onDone(t, res)
+                t = pending.pop(fut)
+                onDone(t, taskResult(fut, t))
                 byId.pop(t['spec']['runId'], None)  # lets Dask forget results nobody needs any more
                 fut.release()
         except KeyboardInterrupt:
-            stop.set()  # the running tasks kill their yade within runner.ASK_DASK seconds
-            self.client.cancel(list(futures))
-            time.sleep(runner.ASK_DASK + 1)
+            # the running tasks kill their yade within runner.ASK_DASK seconds, the others do not start;
+            # the runs stopped are attempts too: their results go to onDone, for as long as stopping takes
+            stop.set()
+            deadline = time.time() + runner.ASK_DASK + runner.KILL_WAIT + 5
+            while pending and time.time() < deadline:
+                for fut in [f for f in pending if f.done()]:
+                    t = pending.pop(fut)
+                    res = taskResult(fut, t)
+                    if res is not None:  # None: it did not start
+                        onDone(t, res)
+                time.sleep(runner.POLL)
+            self.client.cancel(list(pending))
             raise
         finally:
             try:

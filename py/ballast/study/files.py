@@ -1,5 +1,7 @@
-"""Files of a study: written atomically, and identified by sha1 (a table, the code of a run)."""
+"""Files of a study: written atomically and synced (on disk before their name is), identified by
+sha1 (a table, the code of a run); the test of a finished run."""
 import hashlib
+import json
 import os
 import uuid
 
@@ -13,7 +15,60 @@ def writeAtomic(path, data):
     tmp = '%s.%d.%s.tmp' % (path, os.getpid(), uuid.uuid4().hex[:6])
     with open(tmp, 'wb' if isinstance(data, bytes) else 'w') as fh:
         fh.write(data)
+        fh.flush()
+        os.fsync(fh.fileno())
     os.replace(tmp, path)
+    syncDir(os.path.dirname(path) or '.')
+
+
+def syncDir(path):
+    """fsync a directory: the names created, renamed or removed in it are on disk."""
+    fd = os.open(path, os.O_RDONLY | os.O_DIRECTORY)
+    try:
+        os.fsync(fd)
+    finally:
+        os.close(fd)
+
+
+def syncTree(path):
+    """fsync a file, or every file and directory below a directory, the directory last."""
+    if not os.path.isdir(path):
+        fd = os.open(path, os.O_RDONLY)
+        try:
+            os.fsync(fd)
+        finally:
+            os.close(fd)
+        return
+    for d, dirs, names in os.walk(path, topdown=False):
+        for n in names:
+            syncTree(os.path.join(d, n))
+        syncDir(d)
+
+
+def moveSynced(src, dst):
+    """os.replace that a crash cannot undo halfway: what src holds is on disk before dst names it,
+    and the new name is on disk when this returns (a finished run is never an empty or cut file)."""
+    syncTree(src)
+    os.replace(src, dst)
+    syncDir(os.path.dirname(dst) or '.')
+
+
+def readSummary(runDir):
+    """The one test of a finished run, for the study (which runs it skips) and the aggregation
+    (which runs it reads) alike: runDir/summary.json parses as a JSON object. Returns (summary,
+    None), or (None, why not)."""
+    try:
+        with open(os.path.join(runDir, 'summary.json')) as fh:
+            summary = json.load(fh)
+    except FileNotFoundError:
+        return None, 'no summary.json'
+    except OSError as e:
+        return None, 'summary.json unreadable: %s' % e.strerror
+    except ValueError as e:
+        return None, 'summary.json is not JSON (cut short?): %s' % e
+    if not isinstance(summary, dict):
+        return None, 'summary.json holds a %s, not a JSON object' % type(summary).__name__
+    return summary, None
 
 
 def packageSha1():

@@ -6,7 +6,15 @@ in a thread of the study (local) or on a Dask worker. A worker that sees the stu
 shared file system) writes the run there; one that does not gets the script, the table and the
 packing with the task and sends the run's files back (:func:`finalizeShipped` writes them).
 :func:`runRow` never raises: a failure is a result like any other.
+
+A run does not outlive its runner, however that ends (a SIGKILL from the OOM killer or Slurm
+too): yade gets a parent-death signal and a watchdog kills what is left of its process group. A
+run of the study directory holds a lock there for the whole attempt: a runner started again beside
+a live one does not run the row a second time nor remove its work folder.
 """
+import ctypes
+import fcntl
+import functools
 import json
 import os
 import re
@@ -15,18 +23,54 @@ import shutil
 import signal
 import socket
 import subprocess
+import sys
 import tempfile
 import threading
 import time
 import traceback
 
-from .files import codeSha1, readFiles, sha1, writeAtomic
+from .files import codeSha1, moveSynced, readFiles, readSummary, sha1, writeAtomic
 
 # Set on Ctrl-C by the local executor: every running run kills its yade and returns.
 STOP = threading.Event()
 POLL = 0.2        # [s] how often a run checks its yade, the --timeout and STOP
 ASK_DASK = 5.0    # [s] how often a run on a Dask worker asks whether the study was stopped
 KILL_WAIT = 10.0  # [s] after SIGTERM, before SIGKILL
+PR_SET_PDEATHSIG = 1  # prctl option of Linux: the signal a process gets when its parent dies
+PRCTL = ctypes.CDLL(None, use_errno=True).prctl  # looked up here, not between fork and exec
+
+# The watchdog of one run (see runYade), in a session of its own: reads the process group of the
+# run's yade, then waits for its stdin to close, which happens when the run is over or when the
+# runner died, however it died, and kills what is left of the group: yade's children have no
+# parent-death signal of their own. A zombie counts as gone: an orphan's waits for init to reap it.
+WATCHDOG = r'''
+import os, signal, sys, time
+
+def alive(group):
+    for pid in filter(str.isdigit, os.listdir('/proc')):
+        try:
+            with open('/proc/%s/stat' % pid) as fh:
+                state, _, pgrp = fh.read().rsplit(')', 1)[1].split()[:3]
+        except (OSError, ValueError):
+            continue
+        if int(pgrp) == group and state != 'Z':
+            return True
+    return False
+
+line = sys.stdin.readline()
+sys.stdin.read()
+group = int(line) if line else None  # None: yade did not start
+for sig in (signal.SIGTERM, signal.SIGKILL):
+    if group is None or not alive(group):
+        break
+    try:
+        os.killpg(group, sig)
+    except ProcessLookupError:  # gone meanwhile
+        break
+    end = time.time() + float(sys.argv[1])
+    while alive(group) and time.time() < end:
+        time.sleep(0.05)
+'''
 
 
 def seesStudy(out, token):
@@ -67,6 +111,62 @@ def failedLog(path):
             return '(FAILED)' in fh.read()
     except OSError:
         return False
+
+
+def rowLock(work, runId):
+    """The lock of a run in the study's work directory (work/<run id>.lock), taken: an open file,
+    or None when another runner holds it (the run goes on there)."""
+    os.makedirs(work, exist_ok=True)
+    path = os.path.join(work, runId + '.lock')
+    while True:
+        fh = open(path, 'a')
+        try:
+            fcntl.flock(fh, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except BlockingIOError:
+            fh.close()
+            return None
+        try:
+            if os.fstat(fh.fileno()).st_ino == os.stat(path).st_ino:
+                return fh
+        except FileNotFoundError:
+            pass
+        fh.close()  # its holder removed this file as it let it go: take the file there now
+
+
+def releaseRow(lock):
+    """Let a run's lock go; the file is removed first, so nobody takes a lock on a name that is gone."""
+    try:
+        os.unlink(lock.name)
+    except FileNotFoundError:  # work/ removed by hand: runRow still must not raise
+        pass
+    lock.close()
+
+
+def clearWork(work):
+    """Clear a study's work directory as the study starts: remove what attempts of dead runners left,
+    keep the locks and the folders of the runs another runner still holds. Returns a journal record
+    of each attempt removed ({runId, status 'started', error}): it started, its end was never
+    recorded."""
+    os.makedirs(work, exist_ok=True)
+    names = os.listdir(work)
+    held = set()
+    for n in names:
+        if n.endswith('.lock'):
+            lock = rowLock(work, n[:-len('.lock')])
+            if lock is None:
+                held.add(n[:-len('.lock')])
+            else:
+                releaseRow(lock)
+    records = []
+    for n in names:
+        runId = n.rsplit('.', 1)[0]  # an attempt's folder is <run id>.<random letters>
+        path = os.path.join(work, n)
+        if os.path.isdir(path) and runId not in held:
+            said = lastError(os.path.join(path, 'run.log'))
+            records.append({'runId': runId, 'status': 'started', 'error': 'no end recorded: its runner ended first '
+                            '(killed, or its machine went down)' + ('; its log ends: ' + said if said else '')})
+            shutil.rmtree(path, ignore_errors=True)
+    return records
 
 
 def workDir(spec, shared, leader):
@@ -113,7 +213,7 @@ def stopRequested(spec):
         event = Event(spec['stopEvent'])
     except Exception:
         return STOP.is_set
-    asked = [time.time()]
+    asked = [0.0]  # the first call asks: a run does not start once the study is stopped
 
     def stopped():
         if time.time() - asked[0] < ASK_DASK:
@@ -126,12 +226,29 @@ def stopRequested(spec):
     return stopped
 
 
-def runYade(cmd, env, cwd, logPath, deadline, stopped):
+def dieWithParent(parent):
+    """preexec_fn of a run's yade: SIGTERM when the runner's thread that started it ends, killed
+    too; at once if the runner (pid `parent`) died before this was set."""
+    if PRCTL(PR_SET_PDEATHSIG, int(signal.SIGTERM), 0, 0, 0) != 0:
+        raise OSError(ctypes.get_errno(), 'prctl(PR_SET_PDEATHSIG, SIGTERM)')
+    if os.getppid() != parent:
+        os.kill(os.getpid(), signal.SIGTERM)
+
+
+def runYade(cmd, env, cwd, logPath, deadline, stopped, keepFds=()):
     """Run cmd with its output in logPath; kill it (and its children: its own process group) past
-    the deadline or when stopped(). Returns (exit code, None or 'timeout' or 'stopped')."""
-    with open(logPath, 'w') as log:
-        proc = subprocess.Popen(cmd, stdout=log, stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL, env=env, cwd=cwd,
-                                start_new_session=True)
+    the deadline or when stopped(). keepFds: descriptors it inherits (the run's lock). Should this
+    process die first, the run dies with it: yade by its parent-death signal, what it started by the
+    watchdog. Returns (exit code, None or 'timeout' or 'stopped')."""
+    watchdog = subprocess.Popen([sys.executable, '-I', '-S', '-c', WATCHDOG, str(KILL_WAIT)], stdin=subprocess.PIPE,
+                                stdout=subprocess.DEVNULL, start_new_session=True)
+    try:
+        with open(logPath, 'w') as log:
+            proc = subprocess.Popen(cmd, stdout=log, stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL, env=env, cwd=cwd,
+                                    start_new_session=True, pass_fds=keepFds,
+                                    preexec_fn=functools.partial(dieWithParent, os.getpid()))
+        watchdog.stdin.write(b'%d\n' % proc.pid)
+        watchdog.stdin.flush()
         while True:
             try:
                 return proc.wait(timeout=POLL), None
@@ -150,22 +267,36 @@ def runYade(cmd, env, cwd, logPath, deadline, stopped):
                     except subprocess.TimeoutExpired:
                         continue
                 return proc.wait(), why
+    finally:
+        watchdog.stdin.close()  # the run is over: the watchdog kills what is left of its group, if anything
+        watchdog.wait()
 
 
 def runRow(spec, leader=None):
     """Run one table row. spec (see Study.tasks): runId, line, row, tableText, tableName, scriptPath,
     scriptText, yade, nice, env, out, token, packings, packingFiles, timeout [s], executor, ship,
     stopEvent. leader: the result of the run that built the packing this one needs (its new
-    packings), or None. Returns a dict; status 'ok', 'failed', 'timeout' or 'stopped'."""
+    packings), or None. Returns a dict, status 'ok', 'failed', 'timeout', 'stopped' or 'elsewhere'
+    (another runner holds the run's lock); None if the study was stopped before this run started."""
     runId, line = spec['runId'], spec['line']
     host = socket.gethostname()
     started = time.time()
     res = {'runId': runId, 'line': line, 'host': host, 'started': started, 'status': 'failed', 'rc': None, 'error': '',
            'shared': False, 'files': None, 'packings': {}, 'log': None, 'summary': None}
-    work = None
+    work = lock = None
     try:
+        stopped = stopRequested(spec)
+        if stopped():
+            return None
         shared = not spec.get('ship') and seesStudy(spec['out'], spec['token'])
         res['shared'] = shared
+        if shared:
+            lock = rowLock(os.path.join(spec['out'], 'work'), runId)
+            if lock is None:
+                held = os.path.join(spec['out'], 'work', runId + '.lock')
+                res.update(status='elsewhere', finished=time.time(), wall=0.0,
+                           error='running elsewhere: another runner holds ' + held)
+                return res
         work, table, script, pdir, given = workDir(spec, shared, leader)
         results = os.path.join(work, 'results')
         cmd = [spec['yade']] + (['--nice=%d' % spec['nice']] if spec['nice'] is not None else []) + [
@@ -177,21 +308,24 @@ def runRow(spec, leader=None):
             ' '.join(shlex.quote(c) for c in cmd)
         logPath = os.path.join(work, 'run.log')
         code = codeSha1(spec['scriptText'])  # as the run starts, before yade imports the package
-        rc, why = runYade(cmd, env, work, logPath, spec['timeout'] and started + spec['timeout'], stopRequested(spec))
+        rc, why = runYade(cmd, env, work, logPath, spec['timeout'] and started + spec['timeout'], stopped,
+                          [lock.fileno()] if lock else [])
         finished = time.time()
         res.update(rc=rc, finished=finished, wall=finished - started)
         runDir = os.path.join(results, runId)
-        if os.path.exists(os.path.join(runDir, 'summary.json')):
-            with open(os.path.join(runDir, 'summary.json')) as fh:
-                res['summary'] = json.load(fh)
+        res['summary'], unfinished = readSummary(runDir)
         ok = why is None and rc == 0 and res['summary'] is not None
         res['status'] = 'ok' if ok else (why or 'failed')
         if why == 'timeout':
             res['error'] = 'killed after the --timeout of %g s' % spec['timeout']
         elif why == 'stopped':
             res['error'] = 'stopped (the study was interrupted)'
+        elif rc < 0:  # the OOM killer, a kill: the log's last line says only where it was
+            res['error'] = 'killed by signal %d' % -rc
+        elif rc == 0 and not ok:
+            res['error'] = 'exit code 0 but ' + unfinished
         elif not ok:
-            res['error'] = lastError(logPath) or ('exit code %d, no summary.json' % rc)
+            res['error'] = lastError(logPath) or 'exit code %d' % rc
         with open(logPath, 'a') as log:
             log.write(batchTrailer(runId, rc, 'OK' if ok else ('STOPPED' if why == 'stopped' else 'FAILED'),
                                    int(finished - started), res['command'], started, finished))
@@ -222,14 +356,17 @@ def runRow(spec, leader=None):
     finally:
         if work and os.path.isdir(work):
             shutil.rmtree(work, ignore_errors=True)
+        if lock:
+            releaseRow(lock)
     return res
 
 
 def finalize(out, runId, res, runDir, logPath):
     """Move a run's output into the study: runs/<id>/ if it finished, failed/<id>/ if not; its log
-    to logs/<id>.log. Renames within one file system, so a run directory is never half there."""
+    to logs/<id>.log. Synced renames within one file system, so a run directory is never half there,
+    not even after a crash."""
     os.makedirs(os.path.join(out, 'logs'), exist_ok=True)
-    os.replace(logPath, os.path.join(out, 'logs', runId + '.log'))
+    moveSynced(logPath, os.path.join(out, 'logs', runId + '.log'))
     res['finalized'] = True
     failed = os.path.join(out, 'failed', runId)
     if res['status'] == 'stopped':
@@ -238,13 +375,14 @@ def finalize(out, runId, res, runDir, logPath):
     if res['status'] == 'ok':
         final = os.path.join(out, 'runs', runId)
         os.makedirs(os.path.dirname(final), exist_ok=True)
-        if os.path.exists(final):
+        if readSummary(final)[0] is not None:
             res['duplicate'] = True  # a worker lost and its task rerun elsewhere: keep the first
         else:
-            os.rename(runDir, final)
+            shutil.rmtree(final, ignore_errors=True)  # not a finished run (a cut summary.json): replaced
+            moveSynced(runDir, final)
     elif os.path.isdir(runDir):
         os.makedirs(os.path.dirname(failed), exist_ok=True)
-        os.rename(runDir, failed)
+        moveSynced(runDir, failed)
 
 
 def finalizeShipped(out, packings, res):

@@ -6,11 +6,11 @@ A study directory holds
     logs/<run id>.log   the log of the last attempt of every run, with yade-batch's job summary at the end
     failed/<run id>/    what the last failed attempt left (removed once the run succeeds)
     status.csv          one line per table row: status, exit code, duration, host
-    journal.jsonl       every attempt, appended
+    journal.jsonl       every attempt, appended as it ends (one whose runner died: when the study starts again)
     table, study.json   the table as it was run (the runs read their row from it, as under yade-batch)
                         and the study's description (rows, run ids, script, code sha1)
-A run counts as finished when runs/<run id>/summary.json exists: a study started again skips those
-and redoes the rest.
+A run counts as finished when runs/<run id>/summary.json parses (files.readSummary, the test of
+the aggregation too): a study started again skips those and redoes the rest.
 
 Packings are stored in the packings directory (default: 'packings' next to the study directory,
 shared by the studies there) under the name ballast.oedometer.parameters.packingKey gives, and
@@ -22,16 +22,15 @@ import io
 import json
 import os
 import re
-import shutil
 import threading
 import time
 import uuid
 
 from ..names import fmtTime
 from ..oedometer.parameters import packingKey
-from .files import codeSha1, sha1, writeAtomic
+from .files import codeSha1, readSummary, sha1, writeAtomic
 from .options import OPTIONS, StudyError, optionValue
-from .runner import failedLog, finalizeShipped, lastError
+from .runner import clearWork, failedLog, finalizeShipped, lastError
 from .table import Table
 
 # yade-batch's !COLUMNS that are not environment variables of the run
@@ -93,7 +92,7 @@ class Study:
     def finishedRow(self, line):
         """None if the run is not finished; else its row.json ({} if unreadable)."""
         d = os.path.join(self.out, 'runs', self.table.runId(line))
-        if not os.path.exists(os.path.join(d, 'summary.json')):
+        if readSummary(d)[0] is None:
             return None
         try:
             with open(os.path.join(d, 'row.json')) as fh:
@@ -116,7 +115,8 @@ class Study:
 
     def prepare(self):
         """The study directory set up before the first run starts; returns how many unfinished
-        attempts an interrupted study had left (removed: they are redone)."""
+        attempts a runner that died had left (removed: they are redone; in the journal). The
+        attempts another runner still holds are left alone."""
         self.lock()
         for d in ('runs', 'logs', 'failed'):
             os.makedirs(os.path.join(self.out, d), exist_ok=True)
@@ -133,10 +133,12 @@ class Study:
             raise StudyError('%s: finished run(s) in %s/runs were made from other values than the table now gives: %s. '
                              'Remove those run directories or choose another --out.' % (
                                  self.tablePath, self.out, '; '.join(stale[:5])))
-        work = os.path.join(self.out, 'work')
-        left = os.listdir(work) if os.path.isdir(work) else []
-        shutil.rmtree(work, ignore_errors=True)
-        os.makedirs(work)
+        left = clearWork(os.path.join(self.out, 'work'))
+        lineOf = {self.table.runId(n): n for n, _ in self.table.rows}
+        with open(os.path.join(self.out, 'journal.jsonl'), 'a') as fh:
+            for rec in left:
+                fh.write(json.dumps({'runId': rec['runId'], 'line': lineOf.get(rec['runId']), 'status': rec['status'],
+                                     'error': rec['error']}) + '\n')
         self.token = uuid.uuid4().hex
         writeAtomic(os.path.join(self.out, '.study-token'), self.token)
         writeAtomic(os.path.join(self.out, 'table'), self.table.text)
@@ -195,7 +197,16 @@ class Study:
 
     def run(self, executor):
         """Run (or carry on) the study with `executor` (ballast.study.executors). Returns the exit
-        status of scripts/study.py: 0 all finished, 1 some run failed, 130 interrupted."""
+        status of scripts/study.py: 0 all finished, 1 some run failed, 130 interrupted. The study's lock is
+        let go when it returns, not when the object is collected."""
+        try:
+            return self._run(executor)
+        finally:
+            if getattr(self, 'lockFile', None) is not None:
+                self.lockFile.close()
+                self.lockFile = None
+
+    def _run(self, executor):
         cleaned = self.prepare()
         todo = [n for n in self.lines if self.status[n]['status'] != 'finished']
         nDone = len(self.lines) - len(todo)
@@ -257,7 +268,8 @@ class Progress:
         with self.lock:
             self.running.pop(res['runId'], None)
             ok = res['status'] == 'ok'
-            self.counts['ok' if ok else 'failed'] += 1
+            if res['status'] != 'stopped':  # neither: redone next time
+                self.counts['ok' if ok else 'failed'] += 1
             if ok and res.get('wall'):
                 self.walls.append(res['wall'])
             st.status[n] = {'status': 'finished' if ok else res['status'], 'rc': res.get('rc'), 'wall': res.get('wall'),
@@ -339,7 +351,7 @@ def status(out):
     counts = {}
     for r in info['rows']:
         rid = r['runId']
-        if os.path.exists(os.path.join(out, 'runs', rid, 'summary.json')):
+        if readSummary(os.path.join(out, 'runs', rid))[0] is not None:
             st = 'finished'
         elif os.path.isdir(os.path.join(out, 'failed', rid)) or failedLog(os.path.join(out, 'logs', rid + '.log')):
             st = 'failed'
