@@ -17,18 +17,22 @@ void CrushParameters::validate() const
 	requireNonNegative("rMin", rMin);
 }
 
-void evaluateCrushing(const CrushParameters& p, long n, const double* stresses, const double* radii, double* sigmaE,
-                      double* strength, std::uint8_t* crush)
+void evaluateCrushing(const CrushParameters& p, long n, const double* stresses, const double* radii, const double* fMax,
+                      const double* factor, double* stress, double* strength, std::uint8_t* crush)
 {
 	p.validate();
+	if (p.criterion == Criterion::MaxContactForce && !fMax)
+		throw ArgumentError("fMax: the maxContactForce criterion needs the largest contact force of every grain");
 	for (long g = 0; g < n; ++g) {
 		requirePositive("radii", g, radii[g]);
-		// Eigen maps are column-major by default; the stress is row-major, and von Mises of the
-		// symmetric part does not care about the transposition.
+		if (fMax) requireNonNegative("fMax[" + std::to_string(g) + "]", fMax[g]);
+		if (factor) requirePositive("factor", g, factor[g]);
+		// Eigen maps are column-major by default; the stress is row-major, and the criteria use its
+		// symmetric part, which does not care about the transposition.
 		const Eigen::Map<const Mat3> s(stresses + 9 * g);
-		sigmaE[g]   = vonMises(s);
-		strength[g] = sizeStrength(p.ft0, radii[g], p.m);
-		crush[g]    = radii[g] >= p.rMin && sigmaE[g] > strength[g];  // eq. 1
+		stress[g]   = criterionStress(p.criterion, s, fMax ? fMax[g] : 0.0, radii[g]);
+		strength[g] = sizeStrength(p.ft0, radii[g], p.m) * (factor ? factor[g] : 1.0);
+		crush[g]    = radii[g] >= p.rMin && stress[g] > strength[g];  // eq. 1
 	}
 }
 

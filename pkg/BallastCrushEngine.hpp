@@ -1,23 +1,29 @@
 // Bulk crushing decision for all grains of a snapshot, Dubina & Elias section 2:
-//   crush  <=>  r >= rMin  and  sigma_e > f_t,
-// sigma_e from eq. 2 (VonMises.hpp) of the fabric stress of eq. 3 (FabricStress.hpp),
-// f_t = ft0 / r^m from eq. 4 (Strength.hpp). The fragments are in FragmentPattern.hpp.
+//   crush  <=>  r >= rMin  and  sigma > f_t,
+// sigma the criterion's stress (CrushCriterion.hpp; the paper's: sigma_e of eq. 2, VonMises.hpp) of the
+// fabric stress of eq. 3 (FabricStress.hpp), f_t = w ft0 / r^m from eq. 4 (Strength.hpp) with w a
+// grain's Weibull strength factor (Weibull.hpp; 1 in the paper). The fragments are in FragmentPattern.hpp.
 // This is the per-grain physics of the YADE engine ballast.BallastCrushEngine; no YADE here.
 #pragma once
 #include <cstdint>
 
+#include "CrushCriterion.hpp"
+
 namespace ballast {
 
 struct CrushParameters {
-	double ft0;   // reference strength [Pa m^m], > 0
-	double m;     // size-effect exponent [-], >= 0 (eq. 4: 1)
-	double rMin;  // grains with r < rMin never crush [m], >= 0
-	void   validate() const;
+	double    ft0;                             // reference strength [Pa m^m], > 0
+	double    m;                               // size-effect exponent [-], >= 0 (eq. 4: 1)
+	double    rMin;                            // grains with r < rMin never crush [m], >= 0
+	Criterion criterion = Criterion::VonMises;  // the stress compared with f_t
+	void      validate() const;
 };
 
-// For n grains: stresses holds n row-major 3x3 fabric tensors [Pa], radii n radii [m] (> 0).
-// Writes sigmaE [Pa], strength f_t [Pa] and crush (0/1) for every grain.
-void evaluateCrushing(const CrushParameters& p, long n, const double* stresses, const double* radii, double* sigmaE,
-                      double* strength, std::uint8_t* crush);
+// For n grains: stresses holds n row-major 3x3 fabric tensors [Pa], radii n radii [m] (> 0), fMax the
+// largest normal contact force of each [N] (read by maxContactForce only; may be null otherwise),
+// factor each grain's strength factor w [-] (> 0; null: all 1). Writes the criterion's stress [Pa],
+// the strength f_t [Pa] and crush (0/1) for every grain.
+void evaluateCrushing(const CrushParameters& p, long n, const double* stresses, const double* radii, const double* fMax,
+                      const double* factor, double* stress, double* strength, std::uint8_t* crush);
 
 }  // namespace ballast

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "InputCheck.hpp"
+#include "Random.hpp"
 
 namespace ballast {
 
@@ -103,23 +104,11 @@ double keptVolumeFraction(Layout layout)
 	return v;
 }
 
-namespace {
-	std::uint64_t splitmix64(std::uint64_t& x)
-	{
-		std::uint64_t z = (x += 0x9E3779B97F4A7C15ull);
-		z               = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-		z               = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-		return z ^ (z >> 31);
-	}
-	double uniform01(std::uint64_t& state) { return (splitmix64(state) >> 11) * 0x1.0p-53; }
-}  // namespace
-
 Mat3 randomRotation(std::uint64_t seed, std::uint64_t counter)
 {
-	std::uint64_t state = seed ^ (counter * 0xD1B54A32D192ED03ull);
-	splitmix64(state);
+	KeyedRandom rng(seed, counter);
 	// Shoemake's uniform random unit quaternion from three uniforms.
-	const double u1 = uniform01(state), u2 = uniform01(state), u3 = uniform01(state);
+	const double u1 = rng.uniform01(), u2 = rng.uniform01(), u3 = rng.uniform01();
 	const double a = std::sqrt(1.0 - u1), b = std::sqrt(u1);
 	Eigen::Quaterniond q(b * std::cos(2 * M_PI * u3), a * std::sin(2 * M_PI * u2), a * std::cos(2 * M_PI * u2),
 	                     b * std::sin(2 * M_PI * u3));

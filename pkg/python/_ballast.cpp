@@ -14,6 +14,7 @@
 #include "../BallastCrushEngine.hpp"
 #include "../FabricStress.hpp"
 #include "../Fatigue.hpp"
+#include "../Weibull.hpp"
 #include "../FragmentPattern.hpp"
 #include "../HertzPressure.hpp"
 #include "../InputCheck.hpp"
@@ -269,22 +270,31 @@ bp::object py_sizeStrength(const bp::object& ft0, const bp::object& r, const bp:
 
 // ---------------------------------------------------------------- snapshot decisions
 bp::tuple py_crushCheck(const bp::object& stresses, const bp::object& radii, const bp::object& ft0, const bp::object& m,
-                        const bp::object& rMin)
+                        const bp::object& rMin, const std::string& criterion, const bp::object& fMax, const bp::object& factor)
 {
-	CrushParameters p{asScalar(ft0, "ft0"), asScalar(m, "m"), asScalar(rMin, "rMin")};
+	CrushParameters p{asScalar(ft0, "ft0"), asScalar(m, "m"), asScalar(rMin, "rMin"), parseCriterion(criterion)};
 	p.validate();
 	np::ndarray s = asDoubles(stresses, "stresses");
 	np::ndarray r = asDoubles(radii, "radii");
 	const long  n = requireShape(r, "radii", {-1}, "a 1-d array");
 	requireShape(s, "stresses", {n, 3, 3}, "an (" + std::to_string(n) + ",3,3) array, one tensor per radius");
-	np::ndarray               sigmaE = emptyDoubles({n}), ft = emptyDoubles({n});
+	// optional per-grain arrays: None, or one value per radius
+	auto perGrain = [&](const bp::object& o, const char* name) -> std::vector<double> {
+		if (o.is_none()) return {};
+		np::ndarray a = asDoubles(o, name);
+		requireShape(a, name, {n}, "None or an (" + std::to_string(n) + ",) array, one value per radius");
+		return std::vector<double>(dptr(a), dptr(a) + n);
+	};
+	const std::vector<double> fm = perGrain(fMax, "fMax"), w = perGrain(factor, "factor");
+	np::ndarray               stress = emptyDoubles({n}), ft = emptyDoubles({n});
 	std::vector<std::uint8_t> crush(n);
-	evaluateCrushing(p, n, dptr(s), dptr(r), wptr(sigmaE), wptr(ft), crush.data());
-	finiteResult(sigmaE, "stresses", "von Mises stress");
-	finiteResult(ft, "ft0, radii, m", "strength ft0 / r^m");
+	evaluateCrushing(p, n, dptr(s), dptr(r), fMax.is_none() ? nullptr : fm.data(), factor.is_none() ? nullptr : w.data(),
+	                 wptr(stress), wptr(ft), crush.data());
+	finiteResult(stress, "stresses, fMax, radii", "criterion's stress");
+	finiteResult(ft, "ft0, radii, m, factor", "strength factor x ft0 / r^m");
 	np::ndarray flag = np::zeros(bp::make_tuple(n), np::dtype::get_builtin<bool>());
 	std::copy(crush.begin(), crush.end(), reinterpret_cast<bool*>(flag.get_data()));
-	return bp::make_tuple(sigmaE, ft, flag);
+	return bp::make_tuple(stress, ft, flag);
 }
 
 bp::tuple py_abrasionCheck(const bp::object& radii, const bp::object& grain1, const bp::object& grain2, const bp::object& Fn,
@@ -416,6 +426,21 @@ std::uint64_t asSeed(const bp::object& o, const std::string& name)
 	return v;
 }
 
+np::ndarray py_weibullFactors(const bp::object& seed, const bp::object& keys, const bp::object& modulus)
+{
+	const std::uint64_t sd = asSeed(seed, "seed");
+	np::ndarray         k  = asIndices(keys, "keys");
+	const long          n  = requireShape(k, "keys", {-1}, "a 1-d array");
+	std::vector<std::uint64_t> u(n);
+	for (long i = 0; i < n; ++i) {
+		if (lptr(k)[i] < 0) throw ArgumentError("keys: expected integers >= 0, got " + std::to_string(lptr(k)[i]) + " at index " + std::to_string(i));
+		u[i] = (std::uint64_t)lptr(k)[i];
+	}
+	np::ndarray out = emptyDoubles({n});
+	weibullFactors(sd, n, u.data(), asScalar(modulus, "modulus"), wptr(out));
+	return finiteResult(out, "modulus", "Weibull factor");
+}
+
 np::ndarray py_randomRotation(const bp::object& seed, const bp::object& counter)
 {
 	return matToArray(randomRotation(asSeed(seed, "seed"), asSeed(counter, "counter")));
@@ -500,9 +525,16 @@ BOOST_PYTHON_MODULE(_ballast)
 	bp::def("effectiveRadius", py_effectiveRadius, (bp::arg("R1"), "R2"), "R1 R2 / (R1 + R2) [m]; 0 is a wall.");
 	bp::def("sizeStrength", py_sizeStrength, (bp::arg("ft0"), "radius", bp::arg("m") = 1.0),
 	        "Size-dependent strength, eq. 4 [Pa]: ft0 / r^m; ft0 [Pa m^m], radius [m], m [-] (paper: 1).");
-	bp::def("crushCheck", py_crushCheck, (bp::arg("stresses"), "radii", "ft0", "m", "rMin"),
-	        "Crushing decision for all grains (eq. 1): stresses (N,3,3) [Pa], radii (N,) [m].\n"
-	        "Returns (sigmaE (N,) [Pa], strength (N,) [Pa], crush (N,) bool); grains with r < rMin never crush.");
+	bp::def("crushCheck", py_crushCheck,
+	        (bp::arg("stresses"), "radii", "ft0", "m", "rMin", bp::arg("criterion") = "vonMises", bp::arg("fMax") = bp::object(),
+	         bp::arg("factor") = bp::object()),
+	        "Crushing decision for all grains (eq. 1): stresses (N,3,3) [Pa], radii (N,) [m]; criterion 'vonMises' (eq. 2),\n"
+	        "'maxContactForce' (fMax / d^2, fMax (N,) [N] the largest normal contact force of each grain) or\n"
+	        "'majorPrincipal'; factor (N,) [-] each grain's strength factor (None: 1).\n"
+	        "Returns (stress (N,) [Pa], strength factor x ft0 / r^m (N,) [Pa], crush (N,) bool); r < rMin never crush.");
+	bp::def("weibullFactors", py_weibullFactors, (bp::arg("seed"), "keys", "modulus"),
+	        "Weibull strength factors (docs/strength.md): w = (-ln U)^(1/modulus), U uniform from (seed, key), one per\n"
+	        "key (N,) integers >= 0; modulus 0 gives 1. Reproducible and independent of the order of the keys.");
 	bp::def("fatigueCheck", py_fatigueCheck, (bp::arg("ratio"), "radii", "state", "exponent", "endurance", "hysteresis", "rMin"),
 	        "Fatigue (docs/fatigue.md): one sample of the stress ratio sigma_e / f_t (N,) [-] of grains of radii (N,) [m],\n"
 	        "their state (N,4) (damage D, running extreme, rising 0/1, damaging peaks; a new grain is 0, 0, 1, 0);\n"

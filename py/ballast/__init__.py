@@ -11,7 +11,7 @@ re-exports it. The YADE engines ``BallastCrushEngine`` and ``BallastAbrasionEngi
 from ._ballast import (abrasionBound, abrasionCheck, contactModulus, crushCheck, effectiveRadius, fabricStress, fatigueCheck,
                        fragmentPattern, grainStresses, hertzPressure, hertzPressureFromForce, keptVolumeFraction,
                        matricesToArray, patternName, placeFragments, principalStresses, randomRotation,
-                       sizeStrength, sphereContactBound, vonMises)
+                       sizeStrength, sphereContactBound, vonMises, weibullFactors)
 from .geometry import sphereVolume
 
 _ENGINES = ('BallastCrushEngine', 'BallastAbrasionEngine', 'restore')
@@ -19,7 +19,7 @@ _ENGINES = ('BallastCrushEngine', 'BallastAbrasionEngine', 'restore')
 __all__ = ['abrasionBound', 'abrasionCheck', 'contactModulus', 'crushCheck', 'effectiveRadius', 'fabricStress',
            'fragmentPattern', 'grainStresses', 'hertzPressure', 'hertzPressureFromForce', 'keptVolumeFraction',
            'matricesToArray', 'patternName', 'placeFragments', 'principalStresses', 'randomRotation',
-           'sizeStrength', 'sphereContactBound', 'sphereVolume', 'vonMises'] + list(_ENGINES)
+           'sizeStrength', 'sphereContactBound', 'sphereVolume', 'vonMises', 'weibullFactors', 'fatigueCheck'] + list(_ENGINES)
 
 
 def __getattr__(name):

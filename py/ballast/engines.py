@@ -27,7 +27,7 @@ from yade import O, utils
 from yade import Vector3
 from yade.wrapper import PyRunner
 
-from . import _ballast, contacts, harvest
+from . import _ballast, contacts, energy, harvest
 from .geometry import sphereVolume
 from .params import ABRASION, CRUSH, PERIODIC, ParamError, docTable, validate, validateAll
 
@@ -81,7 +81,7 @@ class _BallastEngine(PyRunner):
     @property
     def events(self):
         """The events so far (a copy: outputs are changed by the engine only)."""
-        return [dict(e, pos=list(e['pos']), newIds=list(e['newIds'])) for e in self.__dict__['_events']]
+        return [{k: list(v) if isinstance(v, list) else v for k, v in e.items()} for e in self.__dict__['_events']]
 
     def __setattr__(self, name, value):
         owner = type(self).__name__
@@ -175,7 +175,9 @@ class BallastCrushEngine(_BallastEngine):
         'volumeLost': (0.0, 'grain volume lost by crushing [m^3]'),
         'massLost': (0.0, 'grain mass lost by crushing [kg]'),
         'events': ([], 'one dict per crushed grain: kind, t [s], iter, id, pos [m], radius [m], value (sigma_e [Pa]), '
-                       'strength (f_t [Pa]; f_t (1 - D) with fatigue), newIds'),
+                       'strength (f_t [Pa]; f_t (1 - D) with fatigue), newIds; energyBefore, energyAfter (the next '
+                       'check) and with keep=volume energyGrown: [kinetic, elastic] [J] of the grain or its fragments '
+                       'and their neighbours (ballast.energy)'),
         'nChecks': (0, 'checks run so far'),
         'checkSeconds': (0.0, 'wall time spent in checks, before the state is written to O.tags [s]'),
         'maxStressRatio': (0.0, 'largest sigma_e / f_t over the grains at the last check [-]'),
@@ -214,6 +216,10 @@ class BallastCrushEngine(_BallastEngine):
 
     def _saveChecks(self):
         _BallastEngine._saveChecks(self)
+        d = self.__dict__
+        if d.get('_growing') or d.get('_pending') or (_TAG + self._key + '.internal') in O.tags.keys():
+            O.tags[_TAG + self._key + '.internal'] = json.dumps({'growing': d.get('_growing', []),
+                                                                'pending': d.get('_pending', [])})
         F = self.__dict__.get('_fatigue')
         if F is not None:  # bitwise: base64 of the float64 array
             O.tags[_TAG + self._key + '.fatigue'] = base64.b64encode(np.ascontiguousarray(F).tobytes()).decode('ascii')
@@ -221,10 +227,23 @@ class BallastCrushEngine(_BallastEngine):
     def _summary(self):
         return 'nCrushed=%d volumeLost=%.4g m^3 massLost=%.4g kg' % (self.nCrushed, self.volumeLost, self.massLost)
 
+    def strengthFactors(self, ids):
+        """Each grain's Weibull strength factor w (docs/strength.md): a function of (seed, body id, modulus),
+        so the same after O.save/O.load and drawn afresh for fragments (new ids); None without scatter."""
+        if self.weibullModulus == 0:
+            return None
+        return _ballast.weibullFactors(self.seed, np.asarray(ids, dtype=np.int64), self.weibullModulus)
+
+    def evaluate(self, ids, radii):
+        """(the criterion's stress [Pa], the strength f_t [Pa], crush) of the grains `ids` now, without fatigue."""
+        fMax = harvest.largestContactForces(ids) if self.criterion == 'maxContactForce' else None
+        return _ballast.crushCheck(harvest.stresses(ids), radii, self.ft0, self.m, self.rMin, self.criterion, fMax,
+                                   self.strengthFactors(ids))
+
     def _check(self, tab, ids, radii):
         if len(ids) == 0:
             return False
-        se, ft, crush = _ballast.crushCheck(harvest.stresses(ids), radii, self.ft0, self.m, self.rMin)
+        se, ft, crush = self.evaluate(ids, radii)
         d = self.__dict__
         d['maxStressRatio'] = float(np.max(se / ft))
         strength = ft
@@ -234,25 +253,83 @@ class BallastCrushEngine(_BallastEngine):
                                                   self.fatigueHysteresis, self.rMin)
             strength = ft * (1 - F[ids, 0])
             d['maxDamage'] = float(np.max(F[ids, 0]))
+        changed = self._recordEnergies()
         hit = np.flatnonzero(crush)
-        if len(hit) == 0:
+        if len(hit):
+            pw0 = self._dtBefore()
+            for k in hit:
+                if se[k] <= ft[k]:
+                    d['nFatigueCrushed'] += 1
+                newIds = self._replace(tab, int(ids[k]), float(radii[k]), float(se[k]), float(strength[k]))
+                if self.fatigue:  # fragments start undamaged (docs/fatigue.md)
+                    self._fatigueRows(np.asarray(newIds))[newIds] = self.FRESH
+            tab.commit()
+            self._adjustDt(pw0)
+            changed = True
+        return self._grow(tab) or changed
+
+    # ---------------------------------------------------------------- after a replacement (issue 13)
+    def _recordEnergies(self):
+        """Energy of the fragments and their neighbours at the first check after a replacement (energyAfter)
+        and after its growth ended (energyGrown): the contact forces of the new geometry are those of the
+        step after the change."""
+        d = self.__dict__
+        pending = d.get('_pending')
+        if not pending:
             return False
-        pw0 = self._dtBefore()
-        for k in hit:
-            if se[k] <= ft[k]:
-                d['nFatigueCrushed'] += 1
-            newIds = self._replace(tab, int(ids[k]), float(radii[k]), float(se[k]), float(strength[k]))
-            if self.fatigue:  # fragments start undamaged (docs/fatigue.md)
-                self._fatigueRows(np.asarray(newIds))[newIds] = self.FRESH
-        tab.commit()
-        self._adjustDt(pw0)
+        for k, key in pending:
+            e = d['_events'][k]
+            e[key] = energy.snapshot(e['newIds'])
+        d['_pending'] = []
         return True
+
+    def _grow(self, tab):
+        """keep='volume': every growing replacement's fragments towards the parent's volume, by the share of
+        growTime elapsed. The cluster of fragments is scaled about its centre of mass by a factor per check
+        (radii and distances alike), so fragments never overlap each other; the neighbours are pushed
+        out gradually. The contacts follow (ballast.contacts)."""
+        d = self.__dict__
+        growing = d.get('_growing')
+        if not growing:
+            return False
+        still = []
+        for g in growing:
+            frac = 1.0 if self.growTime <= 0 else min(1.0, (O.time - g['t0']) / self.growTime)
+            want = g['ratio'] ** frac                  # fragments' volume over their volume when placed
+            f = (want / g['grown']) ** (1.0 / 3.0)
+            alive = [O.bodies[i] for i in g['ids'] if O.bodies[i] is not None]  # crushed ones: their fragments grow
+            if alive:
+                mass = sum(b.state.mass for b in alive)
+                centre = sum((b.state.pos * b.state.mass for b in alive), Vector3(0, 0, 0)) / mass
+            for b in alive:
+                i = b.id
+                b.state.pos = centre + (b.state.pos - centre) * f
+                r, m = b.shape.radius, b.state.mass
+                utils.growParticle(i, f, True)         # radius, mass (f^3: the density stays), inertia, refR
+                contacts.resize(i, r, f * r)
+                tab.resized(i, f * r)
+                d['volumeLost'] -= sphereVolume(r) * (f ** 3 - 1)
+                d['massLost'] -= m * (f ** 3 - 1)
+            g['grown'] = want
+            if frac < 1:
+                still.append(g)
+            else:
+                d.setdefault('_pending', []).append((g['event'], 'energyGrown'))
+        d['_growing'] = still
+        tab.commit()
+        return True
+
+    def state(self):
+        s = _BallastEngine.state(self)
+        s['internal'] = {'growing': self.__dict__.get('_growing', []), 'pending': self.__dict__.get('_pending', [])}
+        return s
 
     def _replace(self, tab, bid, r, se, ft):
         """Section 2: the grain is erased and replaced by fragments inside it (Fig. 1)."""
         b = O.bodies[bid]
         st, mat, color, mask = b.state, b.material, b.shape.color, b.groupMask
         pos, vel, angVel, mass = Vector3(st.pos), Vector3(st.vel), Vector3(st.angVel), st.mass
+        before = energy.snapshot([bid])  # kinetic and elastic energy of the grain and its neighbours
         frags = _ballast.placeFragments(self.pattern, (pos[0], pos[1], pos[2]), r, self.seed, self._counter)
         self.__dict__['_counter'] += 1
         O.bodies.erase(bid)
@@ -275,6 +352,12 @@ class BallastCrushEngine(_BallastEngine):
         d['volumeLost'] += sphereVolume(r) - float(np.sum(sphereVolume(frags[:, 3])))
         d['massLost'] += mass - newMass
         self._event('crush', bid, pos, r, se, ft, newIds)
+        k = len(d['_events']) - 1
+        d['_events'][k]['energyBefore'] = before
+        d.setdefault('_pending', []).append((k, 'energyAfter'))
+        if self.keep == 'volume':
+            d.setdefault('_growing', []).append({'ids': newIds, 't0': O.time, 'event': k, 'grown': 1.0,
+                                                 'ratio': r ** 3 / float(np.sum(frags[:, 3] ** 3))})
         return newIds
 
 
@@ -436,6 +519,8 @@ def _restoreKey(key):
         setattr(new, k, getattr(old, k))
     s['outputs']['_events'] = s['outputs'].pop('events')
     new.__dict__.update(s['outputs'])
+    internal = json.loads(O.tags[tag + '.internal']) if (tag + '.internal') in keys else s.get('internal', {})
+    new.__dict__['_growing'], new.__dict__['_pending'] = internal.get('growing', []), internal.get('pending', [])
     new.__dict__['_counter'] = s['counter']
     if (tag + '.fatigue') in keys:
         new.__dict__['_fatigue'] = np.frombuffer(base64.b64decode(O.tags[tag + '.fatigue']), dtype=float).reshape(-1, 4).copy()

@@ -172,6 +172,18 @@ LAWS = {'hertz': ('Law2_ScGeom_MindlinPhys_Mindlin', 'Ip2_FrictMat_FrictMat_Mind
         'linear': ('Law2_ScGeom_FrictPhys_CundallStrack', 'Ip2_FrictMat_FrictMat_FrictPhys')}
 
 
+def largestContactForces(ids):
+    """The largest normal contact force [N] of each of the bodies `ids` (0 without a contact), over all real
+    interactions, read in one pass (:func:`contacts`)."""
+    id1, id2, Fn, _ = contacts()
+    ids = np.asarray(ids, dtype=np.int64)
+    n = max(int(ids.max(initial=-1)), int(id1.max(initial=-1)), int(id2.max(initial=-1))) + 1
+    best = np.zeros(n)
+    np.maximum.at(best, id1, Fn)
+    np.maximum.at(best, id2, Fn)
+    return best[ids]
+
+
 def contactLaw():
     """('hertz' or 'linear', None) when every contact of the scene follows that law, purely elastic in
     the normal direction, with the stiffness its materials give; else (None, the reason why not)."""

@@ -141,6 +141,14 @@ def intBetween(lo, hi):
 INT64_MAX, INT32_MAX = 2 ** 63 - 1, 2 ** 31 - 1
 
 
+def weibullModulus(v):
+    """0 (no scatter) or a modulus in [1, 50]: below 1 the scatter spans orders of magnitude."""
+    v = _number(v)
+    if not (v == 0 or 1 <= v <= 50):
+        raise ValueError
+    return v
+
+
 def positiveInt(v):
     v = _integer(v)
     if v < 1:
@@ -277,10 +285,24 @@ CRUSH = dict({
                      "'octa6' or 'fill14'"),
     'seed': Param(0, '-', 'seed of the random orientation of fragments (reproducible)', intBetween(0, INT64_MAX),
                   'an integer in [0, 2^63 - 1]'),
+    # beyond the paper (docs/strength.md): which stress crushes a grain, and scattered strengths
+    'criterion': Param('vonMises', '-', "the stress compared with f_t: 'vonMises' (eq. 2, the paper), "
+                       "'maxContactForce' (the largest normal contact force over d^2, de Bono & McDowell 2016) or "
+                       "'majorPrincipal' (the largest principal compressive stress of eq. 3)",
+                       choice('vonMises', 'maxContactForce', 'majorPrincipal'),
+                       "'vonMises', 'maxContactForce' or 'majorPrincipal'", text),
+    'weibullModulus': Param(0.0, '-', 'Weibull modulus k of the grains\' strengths: each grain\'s f_t is ft0 / r^m '
+                            'times (-ln U)^(1/k), U uniform from (seed, body id), so eq. 4 is the characteristic '
+                            'strength at every size; 0: every grain exactly ft0 / r^m (the paper)', weibullModulus,
+                            '0 or a number in [1, 50]'),
     'keep': Param('none', '-', "what a replacement keeps besides the fragments' own volume: 'none' (the paper: "
                   "the mass of the lost volume is lost), 'mass' (the fragments' mass and inertia are scaled up "
-                  "so that the parent's mass and momentum are kept)", choice('none', 'mass'), "'none' or 'mass'",
-                  text),
+                  "so that the parent's mass and momentum are kept), 'volume' (the fragments grow in place back "
+                  "to the parent's volume over growTime)", choice('none', 'mass', 'volume'),
+                  "'none', 'mass' or 'volume'", text),
+    'growTime': Param(0.01, 's', "keep='volume': simulated time over which the fragments grow back to the parent's "
+                      "volume, a step at every check (0: at the next check at once, which throws neighbours out)",
+                      nonNegative, NUMBER_NONNEGATIVE),
     # fatigue, beyond the paper (docs/fatigue.md): Basquin-Miner damage D on the peaks of s = sigma_e / f_t
     'fatigue': Param(False, '-', 'fatigue: each grain accumulates damage D from the peaks of its stress ratio s '
                      '= sigma_e / f_t and crushes when s > 1 - D (docs/fatigue.md); fragments start undamaged',

@@ -49,7 +49,7 @@ TEST(BallastCrushEngine, ThresholdAboveAndBelow)
 	std::uint8_t          crush[4];
 	for (int g = 0; g < 4; ++g)
 		diametral(radii[g], forceFor(factor[g] * p.ft0 / radii[g], radii[g]), s + 9 * g);
-	evaluateCrushing(p, 4, s, radii, se, ft, crush);
+	evaluateCrushing(p, 4, s, radii, nullptr, nullptr, se, ft, crush);
 	for (int g = 0; g < 4; ++g) {
 		const double fth = p.ft0 / radii[g];
 		EXPECT_NEAR(ft[g], fth, kRel * fth) << g;
@@ -72,7 +72,7 @@ TEST(BallastCrushEngine, ThroughFabricStress)
 				s9[3 * i + j] = S(i, j);
 		double       se, st;
 		std::uint8_t c;
-		evaluateCrushing(p, 1, s9, &r, &se, &st, &c);
+		evaluateCrushing(p, 1, s9, &r, nullptr, nullptr, &se, &st, &c);
 		EXPECT_NEAR(se, 3.0 * F / (2.0 * kPi * r * r), kRel * ft);
 		EXPECT_NEAR(se, factor * ft, kRel * ft);
 		EXPECT_EQ(c, factor > 1 ? 1 : 0);
@@ -88,7 +88,7 @@ TEST(BallastCrushEngine, ExactlyAtThresholdDoesNotCrush)
 	double                s9[9] = {-ft, 0, 0, 0, 0, 0, 0, 0, 0};
 	double                se, st;
 	std::uint8_t          c;
-	evaluateCrushing(p, 1, s9, &r, &se, &st, &c);
+	evaluateCrushing(p, 1, s9, &r, nullptr, nullptr, &se, &st, &c);
 	EXPECT_NEAR(se, ft, kRel * ft);
 	EXPECT_EQ(c, se > st ? 1 : 0);
 	EXPECT_EQ(c, 0);
@@ -106,7 +106,7 @@ TEST(BallastCrushEngine, SizeExponent)
 			diametral(r, forceFor(factor * fth, r), s9);
 			double       se, st;
 			std::uint8_t c;
-			evaluateCrushing(p, 1, s9, &r, &se, &st, &c);
+			evaluateCrushing(p, 1, s9, &r, nullptr, nullptr, &se, &st, &c);
 			EXPECT_NEAR(st, fth, kRel * fth) << "m = " << m;
 			EXPECT_EQ(c, factor > 1 ? 1 : 0) << "m = " << m;
 		}
@@ -123,7 +123,7 @@ TEST(BallastCrushEngine, MinimumRadius)
 	std::uint8_t          crush[3];
 	for (int g = 0; g < 3; ++g)
 		diametral(radii[g], forceFor(1e6 * p.ft0 / radii[g], radii[g]), s + 9 * g);
-	evaluateCrushing(p, 3, s, radii, se, ft, crush);
+	evaluateCrushing(p, 3, s, radii, nullptr, nullptr, se, ft, crush);
 	EXPECT_EQ(crush[0], 0);
 	EXPECT_EQ(crush[1], 0);
 	EXPECT_EQ(crush[2], 1);
@@ -142,7 +142,7 @@ TEST(BallastCrushEngine, RowMajorShearAndSymmetricPart)
 		double       s9[9] = {0, t, 0, 0, 0, 0, 0, 0, 0};
 		double       se, st;
 		std::uint8_t c;
-		evaluateCrushing(p, 1, s9, &r, &se, &st, &c);
+		evaluateCrushing(p, 1, s9, &r, nullptr, nullptr, &se, &st, &c);
 		EXPECT_NEAR(se, std::sqrt(3.0) * t / 2.0, kRel * ft);
 		EXPECT_EQ(c, factor > 1 ? 1 : 0);
 	}
@@ -164,19 +164,43 @@ TEST(BallastCrushEngine, BadParametersNameTheArgument)
 	double       s[18] = {}, se[2], ft[2];
 	std::uint8_t c[2];
 	const double radii[2] = {0.01, -0.02};
-	EXPECT_THROW(evaluateCrushing({-1.0, 1.0, 0.0}, 1, s, radii, se, ft, c), ArgumentError);
+	EXPECT_THROW(evaluateCrushing({-1.0, 1.0, 0.0}, 1, s, radii, nullptr, nullptr, se, ft, c), ArgumentError);
 	try {
-		evaluateCrushing({1e5, 1.0, 0.0}, 2, s, radii, se, ft, c);
+		evaluateCrushing({1e5, 1.0, 0.0}, 2, s, radii, nullptr, nullptr, se, ft, c);
 		ADD_FAILURE() << "negative radius accepted";
 	} catch (const ArgumentError& e) {
 		EXPECT_EQ(std::string(e.what()).rfind("radii[1]", 0), 0u) << e.what();
 	}
 	const double nanR[1] = {nan};
-	EXPECT_THROW(evaluateCrushing({1e5, 1.0, 0.0}, 1, s, nanR, se, ft, c), ArgumentError);
+	EXPECT_THROW(evaluateCrushing({1e5, 1.0, 0.0}, 1, s, nanR, nullptr, nullptr, se, ft, c), ArgumentError);
 }
 
 TEST(BallastCrushEngine, NoGrains)
 {
 	// n = 0 touches nothing.
-	EXPECT_NO_THROW(evaluateCrushing({1e5, 1.0, 0.0}, 0, nullptr, nullptr, nullptr, nullptr, nullptr));
+	EXPECT_NO_THROW(evaluateCrushing({1e5, 1.0, 0.0}, 0, nullptr, nullptr, nullptr, nullptr, nullptr, nullptr, nullptr));
+}
+
+TEST(BallastCrushEngine, CriterionAndStrengthFactor)
+{
+	// A grain squeezed along a diameter at sigma_e = 0.9 f_t: intact; with a Weibull factor 0.8 its
+	// strength is 0.8 f_t < 0.9 f_t: crushed. Under maxContactForce its stress is F / (4 r^2).
+	const double r = 0.02, ft0 = 2e5, ft = ft0 / r, F = forceFor(0.9 * ft, r);
+	double       s9[9], stress, st;
+	std::uint8_t c;
+	diametral(r, F, s9);
+	CrushParameters p{ft0, 1.0, 0.0};
+	const double    weak = 0.8, strong = 1.0;
+	evaluateCrushing(p, 1, s9, &r, nullptr, &strong, &stress, &st, &c);
+	EXPECT_EQ(c, 0);
+	evaluateCrushing(p, 1, s9, &r, nullptr, &weak, &stress, &st, &c);
+	EXPECT_EQ(c, 1);
+	EXPECT_NEAR(st, 0.8 * ft, 1e-12 * ft);
+	p.criterion = Criterion::MaxContactForce;
+	evaluateCrushing(p, 1, s9, &r, &F, nullptr, &stress, &st, &c);
+	EXPECT_NEAR(stress, F / (4 * r * r), 1e-12 * ft);
+	EXPECT_EQ(c, F / (4 * r * r) > ft ? 1 : 0);
+	EXPECT_THROW(evaluateCrushing(p, 1, s9, &r, nullptr, nullptr, &stress, &st, &c), ArgumentError);  // no fMax
+	const double zero = 0.0;
+	EXPECT_THROW(evaluateCrushing(p, 1, s9, &r, &F, &zero, &stress, &st, &c), ArgumentError);  // factor must be > 0
 }

@@ -314,24 +314,56 @@ def hertzPressureFromForce(g):
     return kw, elementwiseCheck(kw, hertzFromForceRef)
 
 
+def majorPrincipalRef(S):
+    """The largest principal compressive stress of eq. 3 (compression negative): -lambda_min, 0 if none."""
+    return np.maximum(0.0, -np.linalg.eigvalsh(symmetricPart(S))[..., 0])
+
+
 def crushCheck(g):
     n = int(g.rng.integers(0, 5))
     r = g.magnitude(n)
+    criterion = g.pick(['vonMises', 'vonMises', 'maxContactForce', 'majorPrincipal', 'tresca'])
     kw = dict(stresses=g.array(g.signed((n, 3, 3))), radii=g.array(r), ft0=g.number(g.magnitude()),
               m=g.number(g.pick([1.0, 0.0, 2.0, g.rng.uniform(0, 3)])),
-              rMin=g.number(float(np.median(r)) if n and g.chance(0.5) else 0.0))
+              rMin=g.number(float(np.median(r)) if n and g.chance(0.5) else 0.0), criterion=criterion)
+    if criterion == 'maxContactForce' or g.chance(0.2):
+        kw['fMax'] = g.array(g.magnitude(n))
+    if g.chance(0.5):
+        kw['factor'] = g.array(g.magnitude(n))
 
     def check(out):
         S, r = asFloat(kw['stresses']), asFloat(kw['radii'])
         ft0, m, rMin = (float(asFloat(kw[k])) for k in ('ft0', 'm', 'rMin'))
-        se, ft, crush = out
-        assert se.shape == ft.shape == crush.shape == r.shape and crush.dtype == bool
-        if not moderate(S, r, ft0, m, rMin):
+        w = asFloat(kw['factor']) if 'factor' in kw else np.ones(len(r))
+        stress, ft, crush = out
+        assert stress.shape == ft.shape == crush.shape == r.shape and crush.dtype == bool
+        fm = asFloat(kw['fMax']) if 'fMax' in kw else np.zeros(len(r))
+        if not moderate(S, r, ft0, m, rMin, w, fm):
             return False
-        close(se, vonMisesRef(S), atol=1e-9 * tensorScale(S))
-        close(ft, ft0 / r ** m, rtol=1e-10)
-        clear = np.abs(se - ft) > 1e-8 * np.maximum(se, ft)  # eq. 1 away from a tie
-        np.testing.assert_array_equal(crush[clear], ((r >= rMin) & (se > ft))[clear])
+        want = {'vonMises': lambda: vonMisesRef(S), 'majorPrincipal': lambda: majorPrincipalRef(S),
+                'maxContactForce': lambda: fm / (4 * r ** 2)}[criterion]()
+        close(stress, want, atol=1e-9 * (tensorScale(S) if criterion != 'maxContactForce' else np.max(want, initial=0)))
+        close(ft, w * ft0 / r ** m, rtol=1e-10)
+        clear = np.abs(stress - ft) > 1e-8 * np.maximum(stress, ft)  # eq. 1 away from a tie
+        np.testing.assert_array_equal(crush[clear], ((r >= rMin) & (stress > ft))[clear])
+        return True
+    return kw, check
+
+
+def weibullFactors(g):
+    n = int(g.rng.integers(0, 6))
+    kw = dict(seed=g.integer(int(g.rng.integers(0, 2 ** 63))), keys=g.array(g.rng.integers(0, 10 ** 6, n), integers=True),
+              modulus=g.number(g.pick([0.0, 3.0, 10.0, float(g.rng.uniform(1, 50))])))
+
+    def check(w):
+        k = asFloat(kw['modulus'])
+        assert w.shape == (n,) and np.all(w > 0)
+        if k == 0:
+            np.testing.assert_array_equal(w, 1.0)
+        # the same key, drawn alone, gives the same factor (independent of the order and of the others)
+        keys = np.asarray(kw['keys'], dtype=np.int64)
+        if n:
+            assert B.weibullFactors(kw['seed'], keys[-1:], float(k))[0] == w[-1]
         return True
     return kw, check
 
@@ -514,6 +546,7 @@ FUNCTIONS = {'fabricStress': fabricStress, 'grainStresses': grainStresses, 'vonM
              'principalStresses': principalStresses, 'hertzPressure': hertzPressure, 'effectiveRadius': effectiveRadius,
              'sizeStrength': sizeStrength, 'contactModulus': contactModulus, 'hertzPressureFromForce': hertzPressureFromForce,
              'crushCheck': crushCheck, 'abrasionCheck': abrasionCheck, 'fatigueCheck': fatigueCheck,
+             'weibullFactors': weibullFactors,
              'abrasionBound': abrasionBound, 'sphereContactBound': sphereContactBound, 'fragmentPattern': fragmentPattern,
              'keptVolumeFraction': keptVolumeFraction, 'patternName': patternName, 'randomRotation': randomRotation,
              'placeFragments': placeFragments, 'matricesToArray': matricesToArray, '_fastMatrixPath': fastMatrixPath}

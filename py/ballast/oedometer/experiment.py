@@ -194,7 +194,8 @@ class Oedometer:
             # the engine scales O.dt with the drop of PWaveTimeStep() after a replacement (eq. 5),
             # which keeps the dtSafety margin
             period = {'virtPeriod': p['Tc']} if p['Tc'] > 0 else {'iterPeriod': 1}
-            fatigue = {k: p[k] for k in ('keep', 'fatigue', 'fatigueExponent', 'fatigueEndurance', 'fatigueHysteresis')}
+            fatigue = {k: p[k] for k in ('criterion', 'weibullModulus', 'keep', 'growTime', 'fatigue', 'fatigueExponent',
+                                         'fatigueEndurance', 'fatigueHysteresis')}
             extra.append(BallastCrushEngine(ft0=p['ft0'], m=p['m'], pattern=p['pattern'], rMin=p['rMin'], seed=p['seed'],
                                             mask=0, label='crush', **period, **fatigue))
         if p['abrasion']:

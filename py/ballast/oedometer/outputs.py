@@ -16,7 +16,9 @@ from .callbacks import command
 FD_COLUMNS = ('t', 'F', 'delta', 'nCrushed', 'nAbraded', 'Fapplied')
 CHECK_COLUMNS = ('t', 'iter', 'nCrushed', 'maxStressRatio')
 CYCLE_COLUMNS = ('cycle', 't', 'settlement', 'resilient', 'nCrushed', 'nAbraded', 'Bg', 'maxDamage')
-EVENT_COLUMNS = ('kind', 't', 'iter', 'id', 'x', 'y', 'z', 'radius', 'value', 'strength', 'newIds')
+EVENT_COLUMNS = ('kind', 't', 'iter', 'id', 'x', 'y', 'z', 'radius', 'value', 'strength', 'newIds', 'EkBefore',
+                 'EeBefore', 'EkAfter', 'EeAfter', 'EkGrown', 'EeGrown')
+ENERGY_KEYS = ('energyBefore', 'energyAfter', 'energyGrown')  # [kinetic, elastic] [J] of a replacement
 GRAIN_COLUMNS = ('id', 'x', 'y', 'z', 'r', 'mass', 'generation', 'parent', 'nAbraded', 'stressRatio', 'damage')
 
 # colours in the 3D view: original grains, fragments by generation (1, 2, 3+), abraded grains get bluer
@@ -190,9 +192,11 @@ class Outputs:
         ratio = np.zeros(len(ids))
         crush = exp.engine('crush')
         if len(ids):
-            # sigma_e / f_t now (eqs. 2-4), with the crushing engine's strength if there is one
-            ft0, mExp = (crush.ft0, crush.m) if crush is not None else (exp.p['ft0'], exp.p['m'])
-            se, ft, _ = _ballast.crushCheck(harvest.stresses(ids), r, ft0, mExp, 0.0)
+            # the criterion's stress over f_t now (eqs. 2-4), as the crushing engine sees it if there is one
+            if crush is not None:
+                se, ft, _ = crush.evaluate(ids, r)
+            else:
+                se, ft, _ = _ballast.crushCheck(harvest.stresses(ids), r, exp.p['ft0'], exp.p['m'], 0.0)
             ratio = se / ft
         g = self.grains
         g._grow(len(O.bodies))
@@ -226,7 +230,8 @@ class Outputs:
             for e in events:
                 w.writerow([e['kind'], '%.17g' % (e['t'] - exp.loading.t0), e['iter'], e['id']] +
                            ['%.17g' % v for v in e['pos']] + ['%.17g' % e[k] for k in ('radius', 'value', 'strength')] +
-                           [' '.join(str(i) for i in e.get('newIds', []))])
+                           [' '.join(str(i) for i in e.get('newIds', []))] +
+                           sum([['%.9g' % v for v in e[k]] if k in e else ['', ''] for k in ENERGY_KEYS], []))
         table = self.grainTable()
         with open(os.path.join(out, 'grains.csv'), 'w') as fh:
             fh.write(','.join(GRAIN_COLUMNS) + '\n')

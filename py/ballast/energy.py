@@ -1,0 +1,65 @@
+"""Energy of a few bodies and their contacts, for the records of a replacement (issue 13): what a
+crush, and the fragments' growth with keep='volume', injects. A loop over the bodies' own contacts:
+called at events, never per step.
+
+* kinetic: 1/2 m v^2 + 1/2 I w^2 (spheres: isotropic inertia) over the bodies;
+* elastic: over the real contacts with at least one of the bodies, each counted once. Linear law
+  (FrictPhys): Fn^2 / (2 kn) + Fs^2 / (2 ks). Hertz-Mindlin (MindlinPhys): the normal energy of
+  F = kno u^1.5 is 2/5 Fn uN, the tangential Fs^2 / (2 ks) with ks the current tangent stiffness.
+"""
+from yade import O
+
+
+def kinetic(ids):
+    """Kinetic energy [J] of the bodies `ids` (missing ones skipped)."""
+    e = 0.0
+    for i in ids:
+        b = O.bodies[i]
+        if b is None:
+            continue
+        s = b.state
+        e += 0.5 * s.mass * s.vel.squaredNorm() + 0.5 * s.inertia[0] * s.angVel.squaredNorm()
+    return e
+
+
+def partners(ids):
+    """The bodies in real contact with `ids` (ids themselves excluded)."""
+    own = set(ids)
+    out = set()
+    for i in ids:
+        b = O.bodies[i]
+        if b is None:
+            continue
+        for c in b.intrs():
+            if c.isReal:
+                out.add(c.id2 if c.id1 == i else c.id1)
+    return sorted(out - own)
+
+
+def elastic(ids):
+    """Elastic energy [J] stored in the real contacts of the bodies `ids`."""
+    seen, e = set(), 0.0
+    for i in ids:
+        b = O.bodies[i]
+        if b is None:
+            continue
+        for c in b.intrs():
+            key = (min(c.id1, c.id2), max(c.id1, c.id2))
+            if not c.isReal or key in seen:
+                continue
+            seen.add(key)
+            p = c.phys
+            fn, fs = p.normalForce.norm(), p.shearForce.squaredNorm()
+            if type(p).__name__ == 'MindlinPhys':
+                e += 0.4 * fn * max(c.geom.penetrationDepth, 0.0)
+            elif p.kn > 0:
+                e += 0.5 * fn * fn / p.kn
+            if p.ks > 0:
+                e += 0.5 * fs / p.ks
+    return e
+
+
+def snapshot(ids):
+    """[kinetic, elastic] [J] of the bodies `ids` and of those in contact with them."""
+    group = list(ids) + partners(ids)
+    return [kinetic(group), elastic(group)]

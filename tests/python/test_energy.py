@@ -1,0 +1,43 @@
+"""ballast.energy: kinetic and elastic energy of a few bodies against values worked out by hand."""
+import math
+
+import pytest
+from yade import O
+
+from ballast import energy
+from ballast.scenes import grainBetweenWalls
+
+R, OVERLAP = 0.02, 1e-4
+
+
+def test_kinetic_by_hand():
+    """A grain of mass m moving at v = (0.3, 0, 0.4) (|v| = 0.5) and spinning at w = 2 rad/s:
+    1/2 m 0.25 + 1/2 (2/5 m R^2) 4."""
+    g, w0, w1 = grainBetweenWalls(r=R, overlap=OVERLAP, block=False)
+    b = O.bodies[g]
+    b.state.vel, b.state.angVel = (0.3, 0.0, 0.4), (0.0, 2.0, 0.0)
+    m = b.state.mass
+    assert energy.kinetic([g]) == pytest.approx(0.5 * m * 0.25 + 0.5 * 0.4 * m * R ** 2 * 4, rel=1e-12)
+    assert energy.kinetic([g, w0, w1]) == pytest.approx(energy.kinetic([g]), rel=1e-12)  # walls at rest
+
+
+def test_elastic_by_hand_hertz():
+    """Two Hertz-Mindlin wall contacts of overlap u carrying Fn each: 2/5 Fn u per contact, no shear;
+    each contact once even when both of its bodies are given."""
+    g, w0, w1 = grainBetweenWalls(r=R, overlap=OVERLAP)
+    O.run(1, True)
+    e = 0.0
+    for w in (w0, w1):
+        i = O.interactions[g, w]
+        e += 0.4 * i.phys.normalForce.norm() * i.geom.penetrationDepth
+    assert e > 0
+    assert energy.elastic([g]) == pytest.approx(e, rel=1e-12)
+    assert energy.elastic([g, w0, w1]) == pytest.approx(e, rel=1e-12)
+    assert energy.partners([g]) == sorted([w0, w1])
+    k, el = energy.snapshot([g])
+    assert el == pytest.approx(e, rel=1e-12) and k == pytest.approx(energy.kinetic([g]), rel=1e-12)
+    # the closed form: Fn = kno u^1.5, so 2/5 Fn u = 2/5 kno u^2.5
+    i = O.interactions[g, w1]
+    assert 0.4 * i.phys.normalForce.norm() * i.geom.penetrationDepth == pytest.approx(
+        0.4 * i.phys.kno * i.geom.penetrationDepth ** 2.5, rel=1e-9)
+    assert math.isfinite(e)
