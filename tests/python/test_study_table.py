@@ -113,3 +113,16 @@ def test_reading_a_table_leaves_nothing_behind(tmp_path):
     assert p.returncode == 0, p.stderr
     assert p.stdout == 'seed=1\n'
     assert not [d for d in set(os.listdir('/tmp')) - before if d.startswith('yade-')]
+
+
+@pytest.mark.parametrize('column,value,allowed', [
+    ('seed', '1e30', '[0, 2^31 - 1]'), ('seed', '-3', '[0, 2^31 - 1]'), ('f', '1e-300', 'more than the 1e+09'),
+    ('Fmax', '1e300', 'outside rigid-sphere DEM'), ('gamma', '1e-300', '[0.5, 1)'), ('m', '1e5', '[0, 3]'),
+    ('criterion', "'tresca'", "'vonMises', 'maxContactForce' or 'majorPrincipal'"),
+    ('weibullModulus', '0.5', '0 or a number in [1, 50]'),
+])
+def test_audit_cells_are_refused_naming_column_value_and_range(column, value, allowed):
+    """Issue 15: values that passed a table's checks and failed minutes into a run, or never ended."""
+    msg = refused('seed %s\n1 %s\n' % (column, value) if column != 'seed' else 'seed\n%s\n' % value)
+    assert 't.table:2: ' in msg and allowed in msg, msg
+    assert column in msg
