@@ -43,10 +43,10 @@ class LocalExecutor:
                 return self.runRow(t['spec'], leaderRes)
             running[pool.submit(job)] = t
 
-        for t in tasks:
-            if not t['leader']:
-                start(t, None)
-        try:
+        try:  # a Ctrl-C while the runs are being queued stops them too
+            for t in tasks:
+                if not t['leader']:
+                    start(t, None)
             while running:
                 done, _ = wait(list(running), timeout=1.0, return_when=FIRST_COMPLETED)
                 for fut in done:
@@ -126,25 +126,25 @@ class DaskExecutor:
         session = uuid.uuid4().hex[:8]
         stopName = 'study-stop-' + session
         stop = Event(stopName, client=self.client)
-        futures, byId, packingsOf = {}, {}, {}
-        # leaders first and with priority: the runs waiting for their packings can then start sooner
-        for t in sorted(tasks, key=lambda t: t['leader'] is not None):
-            dep = None
-            lead = t['leader']
-            if lead:
-                # the waiting runs need only the leader's new packings, not all its files
-                if lead not in packingsOf:
-                    packingsOf[lead] = self.client.submit(leaderPackings, byId[lead], key='packings-%s-%s' % (lead, session),
-                                                          pure=False)
-                dep = packingsOf[lead]
-            fut = self.client.submit(self.runRow, dict(t['spec'], stopEvent=stopName), dep, pure=False,
-                                     key='oedometer-%s-%s' % (t['spec']['runId'], session), priority=0 if lead else 10)
-            futures[fut] = t
-            byId[t['spec']['runId']] = fut
-            onStart(t, quiet=True)
-        pending = dict(futures)  # the tasks whose result has not been handed to onDone
-        try:
-            for fut in as_completed(list(futures), loop=self.client.loop):
+        byId, packingsOf = {}, {}
+        pending = {}  # future -> task: submitted, its result not yet handed to onDone
+        try:  # a Ctrl-C while the tasks are being submitted stops the ones submitted so far too
+            # leaders first and with priority: the runs waiting for their packings can then start sooner
+            for t in sorted(tasks, key=lambda t: t['leader'] is not None):
+                dep = None
+                lead = t['leader']
+                if lead:
+                    # the waiting runs need only the leader's new packings, not all its files
+                    if lead not in packingsOf:
+                        packingsOf[lead] = self.client.submit(leaderPackings, byId[lead],
+                                                              key='packings-%s-%s' % (lead, session), pure=False)
+                    dep = packingsOf[lead]
+                fut = self.client.submit(self.runRow, dict(t['spec'], stopEvent=stopName), dep, pure=False,
+                                         key='oedometer-%s-%s' % (t['spec']['runId'], session), priority=0 if lead else 10)
+                pending[fut] = t
+                byId[t['spec']['runId']] = fut
+                onStart(t, quiet=True)
+            for fut in as_completed(list(pending), loop=self.client.loop):
                 t = pending.pop(fut)
                 onDone(t, taskResult(fut, t))
                 byId.pop(t['spec']['runId'], None)  # lets Dask forget results nobody needs any more
