@@ -1,5 +1,6 @@
 #include "Fatigue.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -23,7 +24,7 @@ void sampleFatigue(const FatigueParameters& p, double s, GrainFatigue& g)
 			g.extreme = s;
 		} else if (s < g.extreme - p.hysteresis) {  // the peak is over: Basquin-Miner
 			if (g.extreme >= p.endurance) {
-				g.damage += std::pow(g.extreme, p.exponent);
+				g.damage += std::max(0.0, 1.0 - g.extreme) * std::pow(g.extreme, p.exponent);
 				g.peaks += 1;
 			}
 			g.rising  = 0;
@@ -55,8 +56,10 @@ void evaluateFatigue(const FatigueParameters& p, double rMin, long n, const doub
 			                    + formatValue(s.peaks) + ")");
 	}
 	for (long g = 0; g < n; ++g) {
+		crush[g] = 0;
+		if (radii[g] < rMin) continue;  // never degrades: no damage either (it would grow without bound)
 		sampleFatigue(p, ratio[g], state[g]);
-		crush[g] = radii[g] >= rMin && crushesWithDamage(ratio[g], state[g].damage);
+		crush[g] = crushesWithDamage(ratio[g], state[g].damage);
 	}
 }
 

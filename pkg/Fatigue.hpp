@@ -1,7 +1,10 @@
 // Fatigue of grains under repeated loading, beyond the paper (docs/fatigue.md): Basquin's S-N law
-// with Miner's rule, counted on the peaks of each grain's stress ratio s = sigma_e / f_t (eqs. 1-4).
-//   a peak s_p >= endurance adds  D += s_p^b   (a cycle at s_p alone fails after N_f = s_p^-b cycles)
+// N_f(s_p) = s_p^-b and a residual strength falling linearly with the cycles (Broutman & Sahu), counted
+// on the peaks of each grain's stress ratio s = sigma_e / f_t (eqs. 1-4):
+//   a peak s_p >= endurance adds  D += (1 - s_p) s_p^b   (the strength lost per cycle at s_p)
 //   the strength falls with D:    crush  <=>  r >= rMin  and  s > 1 - D   (eq. 1 with f_t (1 - D))
+// so a constant peak s_p crushes the grain after N_f peaks, as Miner's rule says, and a variable one
+// sums the losses. Grains below rMin never degrade: they accumulate no damage.
 // Peaks are load reversals: a peak is counted when s falls `hysteresis` below its running maximum,
 // the next rise starts when s climbs `hysteresis` above its running minimum. Counting load cycles,
 // not checks, keeps the law independent of T_c as long as the checks sample the peaks.
@@ -26,14 +29,14 @@ struct GrainFatigue {
 };
 static_assert(sizeof(GrainFatigue) == 4 * sizeof(double), "GrainFatigue is read as an (n,4) array of doubles");
 
-// One sample s of a grain: counts a peak if s ends one (D += peak^b when peak >= endurance).
+// One sample s of a grain: counts a peak if s ends one (D += (1 - peak) peak^b when peak >= endurance).
 void sampleFatigue(const FatigueParameters& p, double s, GrainFatigue& g);
 
 // Whether a grain of damage D crushes at ratio s: s > 1 - D.
 inline bool crushesWithDamage(double s, double damage) { return s > 1.0 - damage; }
 
-// For n grains: ratio [-] (finite, >= 0) and radius [m] (> 0) of each; updates state[n] with the
-// sample, then writes crush (0/1): r >= rMin and s > 1 - D.
+// For n grains: ratio [-] (finite, >= 0) and radius [m] (> 0) of each; updates the state of the grains
+// with r >= rMin with the sample, then writes crush (0/1): r >= rMin and s > 1 - D.
 void evaluateFatigue(const FatigueParameters& p, double rMin, long n, const double* ratio, const double* radii,
                      GrainFatigue* state, unsigned char* crush);
 

@@ -304,11 +304,12 @@ CRUSH = dict({
                       "volume, a step at every check (0: at the next check at once, which throws neighbours out)",
                       nonNegative, NUMBER_NONNEGATIVE),
     # fatigue, beyond the paper (docs/fatigue.md): Basquin-Miner damage D on the peaks of s = sigma_e / f_t
-    'fatigue': Param(False, '-', 'fatigue: each grain accumulates damage D from the peaks of its stress ratio s '
-                     '= sigma_e / f_t and crushes when s > 1 - D (docs/fatigue.md); fragments start undamaged',
+    'fatigue': Param(False, '-', 'fatigue: each peak s_p of a grain\'s stress ratio s = sigma_e / f_t takes '
+                     '(1 - s_p) s_p^b off its strength (D) and it crushes when s > 1 - D, after s_p^-b equal peaks '
+                     '(docs/fatigue.md); fragments start undamaged',
                      boolean, 'True or False', flag),
-    'fatigueExponent': Param(30.0, '-', 'Basquin exponent b: a peak s_p >= fatigueEndurance adds s_p^b to D '
-                             '(alone, N_f = s_p^-b peaks to failure)', between(1, 100, closedHi=True),
+    'fatigueExponent': Param(30.0, '-', 'Basquin exponent b: a constant peak s_p >= fatigueEndurance crushes a '
+                             'grain after N_f = s_p^-b peaks', between(1, 100, closedHi=True),
                              'a number in [1, 100]'),
     'fatigueEndurance': Param(0.5, '-', 'endurance ratio: peaks of s below it do no damage', between(0, 1),
                               'a number in [0, 1)'),

@@ -39,30 +39,30 @@ std::string messageOf(const FatigueParameters& p)
 
 TEST(Fatigue, ConstantRatioCrushesInTheCycleWorkedOutByHand)
 {
-	// s_p = 0.6, b = 8: each peak adds 0.6^8 = 0.01679616. The grain crushes once s > 1 - D, i.e. once
-	// D > 0.4: after k* = floor(0.4 / 0.01679616) + 1 = floor(23.815) + 1 = 24 peaks, counted as s falls
-	// in cycle 24; in cycle 25 s rises past 1 - D = 0.597 and the grain crushes (never in one cycle:
-	// 0.6 < 1).
+	// s_p = 0.6, b = 8: each peak adds (1 - 0.6) 0.6^8 = 0.4 x 0.01679616. The grain crushes once s > 1 - D,
+	// i.e. once D > 0.4, i.e. after more than N_f = 0.6^-8 = 59.54 peaks (Basquin's life, as Miner's rule
+	// says): k* = 60 peaks, counted as s falls in cycle 60 (1 - D = 0.5969 is then above the falling s);
+	// in cycle 61 s rises past 0.5969 and the grain crushes (never in one cycle: 0.6 < 1).
 	const FatigueParameters p{8.0, 0.5, 0.05};
 	GrainFatigue            g;
-	EXPECT_EQ(crushCycle(p, 0.6, 100, 1000, g), 25);
-	EXPECT_EQ(g.peaks, 24);
-	EXPECT_NEAR(g.damage, 24 * std::pow(0.6, 8), 1e-14);
+	EXPECT_EQ(crushCycle(p, 0.6, 100, 1000, g), 61);
+	EXPECT_EQ(g.peaks, 60);
+	EXPECT_NEAR(g.damage, 60 * 0.4 * std::pow(0.6, 8), 1e-14);
 }
 
 TEST(Fatigue, CountsLoadCyclesNotChecks)
 {
-	// Any even number of samples per cycle hits the peak: 4, 8 or 1000 checks a cycle, the same cycle 25.
+	// Any even number of samples per cycle hits the peak: 4, 8 or 1000 checks a cycle, the same cycle 61.
 	const FatigueParameters p{8.0, 0.5, 0.05};
 	for (int perCycle : {4, 8, 1000}) {
 		GrainFatigue g;
-		EXPECT_EQ(crushCycle(p, 0.6, perCycle, 1000, g), 25) << perCycle;
+		EXPECT_EQ(crushCycle(p, 0.6, perCycle, 1000, g), 61) << perCycle;
 	}
 	// 7 samples miss the peak: the largest sample is s_m = 0.6 (1 - cos(6 pi / 7)) / 2 = 0.57029; it is
-	// what counts: crush in cycle floor((1 - s_m) / s_m^8) + 2 (the sample s_m exceeds 1 - D first then).
+	// what counts: crush in cycle floor(s_m^-8) + 2 (the sample s_m exceeds 1 - D first then).
 	const double sm = 0.6 * (1 - std::cos(6 * kPi / 7)) / 2;
 	GrainFatigue g;
-	EXPECT_EQ(crushCycle(p, 0.6, 7, 1000, g), static_cast<long>(std::floor((1 - sm) / std::pow(sm, 8))) + 2);
+	EXPECT_EQ(crushCycle(p, 0.6, 7, 1000, g), static_cast<long>(std::floor(std::pow(sm, -8))) + 2);
 }
 
 TEST(Fatigue, BelowTheEnduranceRatioNoDamage)
@@ -86,13 +86,13 @@ TEST(Fatigue, RipplesSmallerThanTheHysteresisAreNotCycles)
 	EXPECT_EQ(g.peaks, 0.0);
 	sampleFatigue(p, 0.0, g);
 	EXPECT_EQ(g.peaks, 1.0);
-	EXPECT_NEAR(g.damage, std::pow(0.8, 4), 1e-15);  // 0.4096
+	EXPECT_NEAR(g.damage, 0.2 * std::pow(0.8, 4), 1e-15);  // (1 - 0.8) 0.8^4 = 0.08192
 	// a fall that ends a peak needs a rise of more than the hysteresis before the next peak
 	sampleFatigue(p, 0.04, g);
 	sampleFatigue(p, 0.8, g);  // rises by 0.8 from the valley 0: rising again
 	sampleFatigue(p, 0.7, g);  // falls by 0.1: a second peak of 0.8
 	EXPECT_EQ(g.peaks, 2.0);
-	EXPECT_NEAR(g.damage, 2 * std::pow(0.8, 4), 1e-15);
+	EXPECT_NEAR(g.damage, 2 * 0.2 * std::pow(0.8, 4), 1e-15);
 }
 
 TEST(Fatigue, CrushRule)
@@ -109,6 +109,7 @@ TEST(Fatigue, CrushRule)
 	unsigned char crush;
 	evaluateFatigue(p, 0.01, 1, &s, &r, &g, &crush);
 	EXPECT_EQ(crush, 0);
+	EXPECT_EQ(g.extreme, 0.0);  // below rMin the state is not even sampled: no damage grows there
 	evaluateFatigue(p, 0.0, 1, &s, &r, &g, &crush);
 	EXPECT_EQ(crush, 1);
 }

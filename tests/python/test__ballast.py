@@ -92,7 +92,7 @@ def test_crush_check_threshold_and_rmin():
 def test_fatigue_check_counts_a_peak_and_crushes_with_damage():
     """Three grains, fresh state (0, 0, 1, 0), exponent 2, endurance 0.5, hysteresis 0.1.
     Ratios 0.8, 0.4, 0.8 rise to their first sample; then 0.6, 0.25, 0.75: grain 0 fell 0.2 > 0.1 from
-    0.8, a peak: D = 0.8^2 = 0.64, and 0.6 > 1 - 0.64 crushes it; grain 1 fell 0.15 from 0.4 < endurance: a
+    0.8, a peak: D = (1 - 0.8) 0.8^2 = 0.128, and 0.6 < 1 - 0.128 leaves it; grain 1 fell 0.15 from 0.4 < endurance: a
     reversal without damage; grain 2 fell 0.05 < 0.1: still rising, no peak."""
     fresh = np.tile([0.0, 0.0, 1.0, 0.0], (3, 1))
     r = [0.02, 0.02, 0.02]
@@ -100,7 +100,10 @@ def test_fatigue_check_counts_a_peak_and_crushes_with_damage():
     np.testing.assert_array_equal(st, [[0, 0.8, 1, 0], [0, 0.4, 1, 0], [0, 0.8, 1, 0]])
     assert crush.dtype == bool and not crush.any()
     st, crush = ballast.fatigueCheck([0.6, 0.25, 0.75], r, st, 2.0, 0.5, 0.1, 0.0)
-    np.testing.assert_allclose(st, [[0.64, 0.6, 0, 1], [0, 0.25, 0, 0], [0, 0.8, 1, 0]], rtol=1e-15)
+    np.testing.assert_allclose(st, [[0.128, 0.6, 0, 1], [0, 0.25, 0, 0], [0, 0.8, 1, 0]], rtol=1e-15)
+    assert list(crush) == [False, False, False]
+    # a damaged grain at 0.9 of its strength: 0.9 > 1 - 0.128 crushes it
+    st, crush = ballast.fatigueCheck([0.9, 0.3, 0.8], r, st, 2.0, 0.5, 0.1, 0.0)
     assert list(crush) == [True, False, False]
     assert fresh[0, 2] == 1.0 and fresh[0, 0] == 0.0  # the input state is not changed in place
 

@@ -171,17 +171,20 @@ def volume(r):
     return 4 / 3 * np.pi * r ** 3
 
 
-def fatigueRef(ratio, state, b, endurance, h):
-    """docs/fatigue.md, one sample per grain: a peak >= endurance ends when s falls h below it, D += peak^b."""
+def fatigueRef(ratio, radii, rMin, state, b, endurance, h):
+    """docs/fatigue.md, one sample per grain with r >= rMin: a peak >= endurance ends when s falls h below it,
+    D += (1 - peak) peak^b."""
     out = np.array(state, dtype=float)
     for g, s in enumerate(ratio):
+        if radii[g] < rMin:
+            continue
         D, ext, rising, peaks = out[g]
         if rising:
             if s > ext:
                 ext = s
             elif s < ext - h:
                 if ext >= endurance:
-                    D, peaks = D + ext ** b, peaks + 1
+                    D, peaks = D + max(0.0, 1 - ext) * ext ** b, peaks + 1
                 rising, ext = 0.0, s
         elif s < ext:
             ext = s
@@ -413,7 +416,7 @@ def fatigueCheck(g):
         state = asFloat(kw['state'])
         if not moderate(s, r, state, b, e, h, rMin):
             return False
-        want = fatigueRef(s, state, b, e, h)
+        want = fatigueRef(s, r, rMin, state, b, e, h)
         close(st, want, atol=1e-300)
         clear = np.abs(s - (1 - want[:, 0])) > 1e-12
         np.testing.assert_array_equal(crush[clear], ((r >= rMin) & (s > 1 - want[:, 0]))[clear])

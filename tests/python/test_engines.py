@@ -695,18 +695,18 @@ def fatigueGrain(monkeypatch, sPeak=0.6, **kw):
 
 
 def test_fatigue_crushes_a_grain_at_a_constant_ratio_in_the_cycle_worked_out_by_hand(monkeypatch):
-    """s_p = 0.6 < 1, b = 8: each cycle's peak adds 0.6^8 = 0.01679616 to D; the grain crushes once
-    s > 1 - D, i.e. D > 0.4: after floor(0.4 / 0.01679616) + 1 = 24 peaks, so in load cycle 25."""
+    """s_p = 0.6 < 1, b = 8: each cycle's peak takes (1 - 0.6) 0.6^8 = 0.0067185 off the strength; the grain
+    crushes once s > 1 - D, i.e. after more than N_f = 0.6^-8 = 59.54 peaks: 60 peaks, so in load cycle 61."""
     g, crush = fatigueGrain(monkeypatch)
-    O.run(24 * PER_CYCLE, True)
+    O.run(60 * PER_CYCLE, True)
     assert crush.nCrushed == 0 and O.bodies[g] is not None
     D, extreme, rising, peaks = crush.fatigueState([g])[0]
-    assert peaks == 24 and D == pytest.approx(24 * 0.6 ** 8, rel=1e-12)
+    assert peaks == 60 and D == pytest.approx(60 * 0.4 * 0.6 ** 8, rel=1e-12)
     assert crush.maxDamage == D
     O.run(PER_CYCLE, True)
     assert crush.nCrushed == 1 and O.bodies[g] is None and crush.nFatigueCrushed == 1
     e = crush.events[0]
-    assert 24 * PER_CYCLE <= e['iter'] < 25 * PER_CYCLE            # in cycle 25
+    assert 60 * PER_CYCLE <= e['iter'] < 61 * PER_CYCLE            # in cycle 61
     ft = 2e5 / R
     assert e['strength'] == pytest.approx(ft * (1 - D), rel=1e-12)  # the damaged strength
     assert e['value'] / ft <= 0.6 + 1e-12 and e['value'] > e['strength']
@@ -732,7 +732,7 @@ def test_fatigue_off_is_the_paper(monkeypatch):
 
 def test_fatigue_damage_survives_save_and_load(monkeypatch, tmp_path):
     """Saved after 10 cycles and loaded: the damage is restored bitwise and the grain still crushes
-    in cycle 25."""
+    in cycle 61."""
     g, crush = fatigueGrain(monkeypatch)
     O.run(10 * PER_CYCLE + 7, True)
     before = crush.fatigueState()
@@ -743,6 +743,6 @@ def test_fatigue_damage_survives_save_and_load(monkeypatch, tmp_path):
     assert type(builtins.crush) is BallastCrushEngine and builtins.crush.fatigue
     np.testing.assert_array_equal(builtins.crush.fatigueState(), before)
     assert builtins.crush.fatigueState([g])[0, 3] == 10
-    O.run(15 * PER_CYCLE - 7, True)
+    O.run(51 * PER_CYCLE - 7, True)
     e = builtins.crush.events
-    assert len(e) == 1 and 24 * PER_CYCLE <= e[0]['iter'] < 25 * PER_CYCLE
+    assert len(e) == 1 and 60 * PER_CYCLE <= e[0]['iter'] < 61 * PER_CYCLE

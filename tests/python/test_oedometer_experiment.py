@@ -362,13 +362,14 @@ def test_three_cycles_write_cycles_csv(strong, root):
 
 def test_fatigue_crushes_grains_that_no_single_cycle_breaks(strong, root):
     """The strong run's largest stress ratio s_max (checks.csv) scales with 1/ft0 while nothing crushes:
-    ft0 = 1e12 s_max / 0.7 puts the most loaded grain at s = 0.7 < 1 at the peak. With fatigue (b = 4,
-    endurance 0.3, hysteresis 0.05) that peak adds 0.7^4 = 0.24 to its damage, counted as s falls to
-    0.65 < 1 - 0.24: no crush in cycle 1, and the largest damage after it is (the largest ratio of its
-    checks)^4 exactly. A grain at 0.7 every cycle crushes in cycle floor(0.3 / 0.24) + 2 = 3, when s >
-    1 - 2 x 0.24: within four cycles some grain crushes, and every crush is below the undamaged strength."""
+    ft0 = 1e12 s_max / 0.78 puts the most loaded grain at s = 0.78 < 1 at the peak. With fatigue (b = 4,
+    endurance 0.3, hysteresis 0.05) that peak takes (1 - 0.78) 0.78^4 = 0.081 off its strength, counted as
+    s falls to 0.73 < 1 - 0.081: no crush in cycle 1. The loss (1 - s) s^4 grows with s up to s = 0.8, so the
+    largest damage after cycle 1 is (1 - s1) s1^4 with s1 the largest ratio of its checks, exactly. A grain
+    at 0.78 every cycle lasts N_f = 0.78^-4 = 2.7 cycles and crushes in cycle 4: within five cycles some
+    grain crushes, and every crush is below the undamaged strength."""
     smax = np.loadtxt(os.path.join(strong[0].out, 'checks.csv'), delimiter=',', skiprows=1, ndmin=2)[:, 3].max()
-    run = Oedometer(f=F_STRONG, ft0=1e12 * smax / 0.7, strength=1e15, cycles=4, Fmin=0.2 * FMAX, fatigue=True,
+    run = Oedometer(f=F_STRONG, ft0=1e12 * smax / 0.78, strength=1e15, cycles=5, Fmin=0.2 * FMAX, fatigue=True,
                     fatigueExponent=4, fatigueEndurance=0.3, fatigueHysteresis=0.05,
                     results=os.path.join(root, 'fatigue'), runId='fatigue', packingDir=os.path.join(root, 'packings'),
                     **SMALL)
@@ -377,13 +378,13 @@ def test_fatigue_crushes_grains_that_no_single_cycle_breaks(strong, root):
     chk = np.loadtxt(os.path.join(run.out, 'checks.csv'), delimiter=',', skiprows=1, ndmin=2)
     T = 1 / F_STRONG
     s1 = chk[chk[:, 0] < T, 3].max()
-    assert s1 == pytest.approx(0.7, rel=0.02)          # the same first half cycle as the strong run
+    assert s1 == pytest.approx(0.78, rel=0.02)         # the same first half cycle as the strong run
     assert c[0, 4] == 0                                 # cycle 1: nothing crushed
-    assert c[0, 7] == pytest.approx(s1 ** 4, rel=1e-6)  # Miner's sum of the most loaded grain
+    assert c[0, 7] == pytest.approx((1 - s1) * s1 ** 4, rel=1e-5)  # the strength the most loaded grain lost
     assert s['nCrushed'] >= 1 and s['nFatigueCrushed'] == s['nCrushed']
     with open(os.path.join(run.out, 'grains.csv')) as fh:
         damage = [float(g['damage']) for g in csv.DictReader(fh)]
-    assert max(damage) > 0 and min(damage) >= 0
+    assert 0 < max(damage) < 1 and min(damage) >= 0
 
 
 RESUME_CYCLES = '''
