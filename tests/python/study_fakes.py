@@ -8,7 +8,10 @@ seen.json (what it was given). The environment variable FAKE (a '!FAKE' column o
 it fail (exit 3, leaving a partial output), hang (with a child process; both pids in pids.json),
 end without a summary, with a summary cut in half (exit 0 both), or be killed by SIGKILL mid-run."""
 import os
+import signal
 import socket
+
+import pytest
 
 FAKE_YADE = r'''#!/usr/bin/python3
 import json, os, signal, subprocess, sys, time
@@ -78,3 +81,13 @@ def freePort():
     with socket.socket() as s:
         s.bind(('127.0.0.1', 0))
         return s.getsockname()[1]
+
+
+@pytest.fixture
+def ctrlC():
+    """SIGINT raises KeyboardInterrupt during the test, as it does in a terminal: a process started in the
+    background by a shell without job control (a CI script's `cmd &`) inherits SIGINT ignored, and a test
+    that presses Ctrl-C with os.kill would then wait for ever."""
+    old = signal.signal(signal.SIGINT, signal.default_int_handler)
+    yield
+    signal.signal(signal.SIGINT, old)

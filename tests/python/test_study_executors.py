@@ -12,7 +12,7 @@ import pytest
 from ballast.study import runner
 from ballast.study.executors import DaskExecutor, LocalExecutor, makeExecutor
 from ballast.study.options import StudyError
-from study_fakes import freePort
+from study_fakes import ctrlC, freePort  # noqa: F401 (ctrlC is a fixture)
 
 # Debian's distributed 2022.12 with its tornado: not ours
 pytestmark = pytest.mark.filterwarnings('ignore:make_current is deprecated:DeprecationWarning')
@@ -68,13 +68,17 @@ def stoppingRow(spec, leader):
         EVENTS.append(('start', spec['runId'], None))
     time.sleep(0.3)  # the executor is waiting for results by then
     os.kill(os.getpid(), signal.SIGINT)
-    while not stopped():
+    deadline = time.time() + 30  # a stop that never comes fails the test instead of hanging it
+    while True:
+        if stopped():
+            return {'runId': spec['runId'], 'status': 'stopped', 'packings': {}, 'files': None}
+        if time.time() > deadline:
+            return {'runId': spec['runId'], 'status': 'never stopped', 'packings': {}, 'files': None}
         time.sleep(0.02)
-    return {'runId': spec['runId'], 'status': 'stopped', 'packings': {}, 'files': None}
 
 
 @pytest.mark.parametrize('kind', ['local', 'dask'])
-def test_a_stopped_study_hands_on_the_runs_it_stopped(kind, monkeypatch):
+def test_a_stopped_study_hands_on_the_runs_it_stopped(kind, monkeypatch, ctrlC):
     EVENTS.clear()
     done = []
     twoRuns = [{'spec': {'runId': r, 'line': n}, 'leader': None} for n, r in enumerate('AB', 2)]

@@ -13,7 +13,7 @@ import pytest
 from ballast.study import LocalExecutor, Study, StudyData, runner, status
 from ballast.study.files import codeSha1
 from ballast.study.options import StudyError
-from study_fakes import writeFakeYade
+from study_fakes import ctrlC, writeFakeYade  # noqa: F401 (ctrlC is a fixture)
 
 # lines 2 and 3 need the same packing (seed 1), f = 4 Hz has the shorter loading cycle: it builds it
 TABLE = 'seed! f! !FAKE\n1 2 ok\n1 4 ok\n2 2 fail\n'
@@ -131,7 +131,7 @@ def test_a_stored_packing_needs_no_leader_and_goes_with_the_task(setup):
     assert tasks[2]['spec']['env'] == {'OMP_NUM_THREADS': '1', 'FAKE': 'fail'}  # yade-batch's !COLUMNS
 
 
-def test_a_stopped_run_and_one_a_dead_runner_left_are_in_the_journal(setup, tmp_path, capsys):
+def test_a_stopped_run_and_one_a_dead_runner_left_are_in_the_journal(setup, tmp_path, capsys, ctrlC):
     """Ctrl-C while the run of line 2 goes on: the study stops it and journals it; a folder in work/
     (an attempt of a runner that died) is removed and journaled as started when the study starts."""
     (tmp_path / 'tiny.table').write_text('seed! f! !FAKE\n1 2 hang\n')
