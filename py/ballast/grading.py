@@ -23,7 +23,11 @@ def passing(diameters, masses, sieves=SIEVES_MM, fines=0.0):
     total = float(np.sum(m)) + fines
     if total <= 0:
         raise ValueError('passing: no mass to grade (total %r kg)' % total)
-    return np.array([100.0 * (float(np.sum(m[d <= a])) + fines) / total for a in sieves])
+    order = np.argsort(d, kind='stable')
+    below = np.concatenate([[0.0], np.cumsum(m[order])])[np.searchsorted(d[order], sieves, side='right')]
+    P = 100.0 * (below + fines) / total
+    P[np.asarray(sieves) >= (d.max() if len(d) else 0.0)] = 100.0  # everything passes: exactly 100, not 100 - 1e-14
+    return P
 
 
 def retained(P):
@@ -47,11 +51,11 @@ def breakagePotential(P, sieves=SIEVES_MM, d0=HARDIN_D0_MM):
     everything."""
     x = np.log10(np.asarray(sieves, dtype=float))
     f = np.asarray(P, dtype=float) / 100.0
-    if f[-1] < 1.0:
+    if f[-1] < 1.0 - 1e-12:  # rounding of a sum of masses is not a retained mass
         raise ValueError('breakagePotential: %.3g %% is retained on the coarsest sieve (%g mm); add a coarser '
                          'sieve' % (100 * (1 - f[-1]), sieves[-1]))
     x0 = np.log10(d0)
-    top = int(np.argmax(f >= 1.0))                 # the first sieve passing everything
+    top = int(np.argmax(f >= 1.0 - 1e-12))         # the first sieve passing everything
     grid = np.concatenate([[x0], x[(x > x0) & (np.arange(len(x)) <= top)]])
     g = 1.0 - np.interp(grid, x, f, left=f[0])     # the fraction retained above each size
     if x0 >= x[top]:
