@@ -387,6 +387,26 @@ def test_fatigue_crushes_grains_that_no_single_cycle_breaks(strong, root):
     assert 0 < max(damage) < 1 and min(damage) >= 0
 
 
+def test_a_run_whose_outputs_fail_keeps_its_state_and_says_how_to_get_them(strong, root, monkeypatch, capsys):
+    """A run whose summary raises at the end (as a grading rounding did after 2 hours) has saved its
+    state first and says how to rebuild the outputs; doing so writes them."""
+    def broken(self):
+        raise RuntimeError('summary broken on purpose')
+    monkeypatch.setattr(Oedometer, 'summary', broken)
+    run = Oedometer(f=F_STRONG, ft0=1e12, strength=1e15, results=os.path.join(root, 'broken'), runId='broken',
+                    packingDir=os.path.join(root, 'packings'), **SMALL)
+    with pytest.raises(RuntimeError, match='on purpose'):
+        run.run()
+    end = os.path.join(run.out, 'state-end.yade.gz')
+    assert os.path.isfile(end) and not os.path.exists(os.path.join(run.out, 'summary.json'))
+    assert "Oedometer.reopen(%r)" % end in capsys.readouterr().out
+    monkeypatch.undo()
+    e = Oedometer.reopen(end, results=os.path.join(root, 'broken'), runId='rebuilt')
+    e.outputs.finish(e, e.summary())
+    with open(os.path.join(e.out, 'summary.json')) as fh:
+        assert json.load(fh)['cycles'] == pytest.approx(1, rel=1e-3)
+
+
 RESUME_CYCLES = '''
 import sys
 from ballast.oedometer import Oedometer

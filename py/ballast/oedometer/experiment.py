@@ -152,9 +152,16 @@ class Oedometer:
                             self.counter('abrasion', 'nAbraded')))
         self.outputs.record()  # the last row, at the end of the cycle
         self.outputs.cycleEnd()
-        self.save(os.path.join(self.out, 'state-end.yade.gz'))
-        s = self.summary()
-        self.outputs.finish(self, s)
+        end = os.path.join(self.out, 'state-end.yade.gz')
+        self.save(end)
+        try:
+            s = self.summary()
+            self.outputs.finish(self, s)
+        except Exception as e:  # hours of loading are in the state: say how to get the outputs back
+            self.phases.say('the outputs could not be written (%s: %s); the loaded state is saved: e = '
+                            'Oedometer.reopen(%r); e.outputs.finish(e, e.summary()) writes them' % (
+                                type(e).__name__, e, end))
+            raise
         if p['timing']:
             self._writeTiming()
         self.phases.say('done in %s: peak F %.0f kN at delta %.2f mm, delta max %.2f mm, %d crushed, %d abraded, %d '
