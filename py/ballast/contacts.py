@@ -25,21 +25,13 @@ import math
 from yade import O
 from yade.wrapper import Sphere
 
+from . import _ballast
+from .geometry import frictPhysStiffness
+
 
 def _pair(own, partner):
     """The reference radii YADE's IPhys functors use: a zero side takes the other's value."""
     return (own if own > 0 else partner), (partner if partner > 0 else own)
-
-
-def _linear(phys, Ra, Rb, mat1, mat2):
-    ka, kb = mat1.young * Ra, mat2.young * Rb
-    phys.kn = 2 * ka * kb / (ka + kb)
-    sa, sb = ka * mat1.poisson, kb * mat2.poisson
-    phys.ks = 2 * sa * sb / (sa + sb) if sa > 0 and sb > 0 else 0.0
-
-
-def _effective(Ra, Rb):
-    return Ra * Rb / (Ra + Rb)
 
 
 def resize(bid, rOld, rNew):
@@ -59,9 +51,12 @@ def resize(bid, rOld, rNew):
         g.refR1, g.refR2 = (rNew, partnerNew) if mine1 else (partnerNew, rNew)
         kind = type(p).__name__
         if kind == 'FrictPhys':
-            _linear(p, *_pair(g.refR1, g.refR2), O.bodies[i.id1].material, O.bodies[i.id2].material)
+            m1, m2 = O.bodies[i.id1].material, O.bodies[i.id2].material
+            Ra, Rb = _pair(g.refR1, g.refR2)
+            p.kn, p.ks = frictPhysStiffness(m1.young, m1.poisson, Ra, m2.young, m2.poisson, Rb)
         elif kind == 'MindlinPhys':
-            s = math.sqrt(_effective(*_pair(rNew, partnerNew)) / _effective(*_pair(rOld, partnerOld)))
+            s = math.sqrt(_ballast.effectiveRadius(*_pair(rNew, partnerNew)) /
+                          _ballast.effectiveRadius(*_pair(rOld, partnerOld)))
             p.kno *= s
             p.kso *= s
         else:

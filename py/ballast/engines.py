@@ -40,6 +40,7 @@ _COMMAND = "import ballast.engines as _be; _be._fire(%r)"
 
 _BROKEN = 'bound broken'  # start of prefilterNote once a full read broke the prefilter's bound
 _live = {}      # key -> engine instance created in this process
+_classes = {}   # class name -> class, for restoring
 
 
 def _requireAPeriod(owner, periods):
@@ -48,7 +49,18 @@ def _requireAPeriod(owner, periods):
         raise ParamError('iterPeriod', '%s: %s is not allowed: the engine would never check; give iterPeriod >= 1, '
                          'virtPeriod > 0 [s] or realPeriod > 0 [s]' % (owner, ', '.join(
                              '%s = %r' % kv for kv in periods.items())))
-_classes = {}   # class name -> class, for restoring
+
+
+def _resizeGrain(tab, bid, factor):
+    """Radius x factor for every radius change the engines make: mass (factor^3), inertia (factor^5) and the
+    grain's refR (utils.growParticle; bodyStressTensors reads refR), then its contacts as YADE would create
+    them at the new radius (ballast.contacts), and the grain table. Returns (old radius, mass before, after)."""
+    b = O.bodies[bid]
+    r, mass = b.shape.radius, b.state.mass
+    utils.growParticle(bid, factor, True)
+    contacts.resize(bid, r, factor * r)
+    tab.resized(bid, factor * r)
+    return r, mass, b.state.mass
 
 
 class _BallastEngine(PyRunner):
@@ -302,14 +314,10 @@ class BallastCrushEngine(_BallastEngine):
                 mass = sum(b.state.mass for b in alive)
                 centre = sum((b.state.pos * b.state.mass for b in alive), Vector3(0, 0, 0)) / mass
             for b in alive:
-                i = b.id
                 b.state.pos = centre + (b.state.pos - centre) * f
-                r, m = b.shape.radius, b.state.mass
-                utils.growParticle(i, f, True)         # radius, mass (f^3: the density stays), inertia, refR
-                contacts.resize(i, r, f * r)
-                tab.resized(i, f * r)
+                r, mass, newMass = _resizeGrain(tab, b.id, f)  # the density stays: mass x f^3
                 d['volumeLost'] -= sphereVolume(r) * (f ** 3 - 1)
-                d['massLost'] -= m * (f ** 3 - 1)
+                d['massLost'] -= newMass - mass
             g['grown'] = want
             if frac < 1:
                 still.append(g)
@@ -318,11 +326,6 @@ class BallastCrushEngine(_BallastEngine):
         d['_growing'] = still
         tab.commit()
         return True
-
-    def state(self):
-        s = _BallastEngine.state(self)
-        s['internal'] = {'growing': self.__dict__.get('_growing', []), 'pending': self.__dict__.get('_pending', [])}
-        return s
 
     def _replace(self, tab, bid, r, se, ft):
         """Section 2: the grain is erased and replaced by fragments inside it (Fig. 1)."""
@@ -456,18 +459,13 @@ class BallastAbrasionEngine(_BallastEngine):
         pw0 = self._dtBefore()
         g = self.gamma
         for k in hit:
-            bid, r = int(ids[k]), float(radii[k])
-            st = O.bodies[bid].state
-            mass, pos = st.mass, st.pos
-            # radius, mass (g^3), inertia (g^5) and the grain's refR together (bodyStressTensors reads refR),
-            # then its contacts as YADE would create them at the new radius (stiffness, the partner's refR)
-            utils.growParticle(bid, g, True)
-            contacts.resize(bid, r, g * r)
-            tab.resized(bid, g * r)
+            bid = int(ids[k])
+            pos = Vector3(O.bodies[bid].state.pos)
+            r, mass, newMass = _resizeGrain(tab, bid, g)
             d = self.__dict__
             d['nAbraded'] += 1
             d['volumeLost'] += sphereVolume(r) * (1 - g ** 3)
-            d['massLost'] += mass - O.bodies[bid].state.mass
+            d['massLost'] += mass - newMass
             self._event('abrasion', bid, pos, r, float(p0[k]), self.strength, [])
         tab.commit()
         self._adjustDt(pw0)
@@ -519,7 +517,7 @@ def _restoreKey(key):
         setattr(new, k, getattr(old, k))
     s['outputs']['_events'] = s['outputs'].pop('events')
     new.__dict__.update(s['outputs'])
-    internal = json.loads(O.tags[tag + '.internal']) if (tag + '.internal') in keys else s.get('internal', {})
+    internal = json.loads(O.tags[tag + '.internal']) if (tag + '.internal') in keys else {}
     new.__dict__['_growing'], new.__dict__['_pending'] = internal.get('growing', []), internal.get('pending', [])
     new.__dict__['_counter'] = s['counter']
     if (tag + '.fatigue') in keys:

@@ -13,6 +13,7 @@ import numpy as np
 SIEVES_MM = (0.063, 0.5, 1.0, 2.0, 4.0, 8.0, 11.2, 16.0, 22.4, 31.5, 40.0, 50.0, 63.0, 80.0)
 HARDIN_D0_MM = 0.074  # [mm] Hardin's lower limit of breakage potential (the No. 200 sieve)
 BBI_FINEST_MM = 0.075  # [mm] where our boundary of maximum breakage reaches 0 % passing (the 75 um sieve)
+ROUNDING = 1e-10  # [%] a shortfall from 100 % passing this small is the rounding of a sum of masses
 
 
 def passing(diameters, masses, sieves=SIEVES_MM, fines=0.0):
@@ -51,16 +52,13 @@ def breakagePotential(P, sieves=SIEVES_MM, d0=HARDIN_D0_MM):
     everything."""
     x = np.log10(np.asarray(sieves, dtype=float))
     f = np.asarray(P, dtype=float) / 100.0
-    if f[-1] < 1.0 - 1e-12:  # rounding of a sum of masses is not a retained mass
-        raise ValueError('breakagePotential: %.3g %% is retained on the coarsest sieve (%g mm); add a coarser '
-                         'sieve' % (100 * (1 - f[-1]), sieves[-1]))
+    top = _topIndex(P, sieves, 'breakagePotential')
     x0 = np.log10(d0)
-    top = int(np.argmax(f >= 1.0 - 1e-12))         # the first sieve passing everything
     grid = np.concatenate([[x0], x[(x > x0) & (np.arange(len(x)) <= top)]])
     g = 1.0 - np.interp(grid, x, f, left=f[0])     # the fraction retained above each size
     if x0 >= x[top]:
         return 0.0
-    return float(np.sum(0.5 * (g[1:] + g[:-1]) * np.diff(grid)))
+    return float(np.trapz(g, grid))
 
 
 def hardin(before, after, sieves=SIEVES_MM):
@@ -69,18 +67,18 @@ def hardin(before, after, sieves=SIEVES_MM):
     return (bp - breakagePotential(after, sieves)) / bp if bp > 0 else 0.0
 
 
-def _areaBetween(upper, lower, x):
-    """Integral over x of upper - lower, both linear between the points x (trapezoids)."""
-    return float(np.sum(0.5 * ((upper - lower)[1:] + (upper - lower)[:-1]) * np.diff(x)))
+def _topIndex(P, sieves, who):
+    """Index of the first sieve that passes all of a grading (to ROUNDING); the coarsest must."""
+    P = np.asarray(P, dtype=float)
+    if P[-1] < 100.0 - ROUNDING:
+        raise ValueError('%s: %.3g %% is retained on the coarsest sieve (%g mm); add a coarser sieve'
+                         % (who, 100 - P[-1], sieves[-1]))
+    return int(np.argmax(P >= 100.0 - ROUNDING))
 
 
 def topSize(P, sieves=SIEVES_MM):
     """The smallest sieve that passes 100 % of a grading [mm]."""
-    P = np.asarray(P, dtype=float)
-    if P[-1] < 100.0 - 1e-9:
-        raise ValueError('topSize: %.3g %% is retained on the coarsest sieve (%g mm); add a coarser sieve'
-                         % (100 - P[-1], sieves[-1]))
-    return float(sieves[int(np.argmax(P >= 100.0 - 1e-9))])
+    return float(sieves[_topIndex(P, sieves, 'topSize')])
 
 
 def bbi(before, after, sieves=SIEVES_MM, finest=BBI_FINEST_MM, top=None):
@@ -100,6 +98,6 @@ def bbi(before, after, sieves=SIEVES_MM, finest=BBI_FINEST_MM, top=None):
     b = np.interp(x, xs, np.asarray(before, dtype=float))
     a = np.interp(x, xs, np.asarray(after, dtype=float))
     boundary = 100.0 * (x - x0) / (x1 - x0)
-    A = _areaBetween(a, b, x)
-    AB = _areaBetween(boundary, b, x)  # A + B
+    A = float(np.trapz(a - b, x))
+    AB = float(np.trapz(boundary - b, x))  # A + B
     return A / AB if AB > 0 else 0.0

@@ -121,13 +121,6 @@ def _integer(v):
     return int(v)
 
 
-def intNonNegative(v):
-    v = _integer(v)
-    if v < 0:
-        raise ValueError
-    return v
-
-
 def intBetween(lo, hi):
     """A check for an integer lo <= v <= hi (the range the code below can represent)."""
     def check(v):

@@ -33,7 +33,7 @@ from .. import grading
 from ..engines import BallastAbrasionEngine, BallastCrushEngine
 from ..geometry import sphereVolume
 from ..names import fmtTime, runDirName
-from ..params import requireWritableDir, validate
+from ..params import CRUSH, requireWritableDir, validate
 from . import callbacks, scene
 from .callbacks import command
 from .loading import MODES
@@ -201,10 +201,9 @@ class Oedometer:
             # the engine scales O.dt with the drop of PWaveTimeStep() after a replacement (eq. 5),
             # which keeps the dtSafety margin
             period = {'virtPeriod': p['Tc']} if p['Tc'] > 0 else {'iterPeriod': 1}
-            fatigue = {k: p[k] for k in ('criterion', 'weibullModulus', 'keep', 'growTime', 'fatigue', 'fatigueExponent',
-                                         'fatigueEndurance', 'fatigueHysteresis')}
-            extra.append(BallastCrushEngine(ft0=p['ft0'], m=p['m'], pattern=p['pattern'], rMin=p['rMin'], seed=p['seed'],
-                                            mask=0, label='crush', **period, **fatigue))
+            # every engine parameter the experiment declares (parameters.PARAMS reuses CRUSH's declarations)
+            own = {k: p[k] for k in CRUSH if k in p}
+            extra.append(BallastCrushEngine(mask=0, label='crush', **period, **own))
         if p['abrasion']:
             extra.append(BallastAbrasionEngine(strength=p['strength'], gamma=p['gamma'], rMin=p['rMin'], mask=0,
                                                iterPeriod=p['abrasionPeriod'], label='abrasion'))

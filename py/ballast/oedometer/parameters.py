@@ -9,6 +9,8 @@ import hashlib
 import json
 import math
 
+from .. import _ballast
+from ..geometry import frictPhysStiffness
 from ..params import (ABRASION, CRUSH, INT32_MAX, NUMBER_NONNEGATIVE, NUMBER_POSITIVE, Param, ParamError, anyText,
                       between, boolean, choice, flag, intAtLeast, intBetween, nonNegative, positive, positiveInt,
                       text, validateAll)
@@ -149,8 +151,8 @@ def singleContactOverlap(p, force):
     kno = 4/3 E* sqrt(r / 2) (YADE takes R = r/2 against a wall)."""
     r, E, Es = p['dMin'] / 2, p['young'], p['young'] * p['steelYoungRatio']
     if p['law'] == 'linear':
-        return force / (2 * E * r * Es * r / (E * r + Es * r))
-    Estar = 1 / ((1 - p['poisson'] ** 2) / E + (1 - p['steelPoisson'] ** 2) / Es)
+        return force / frictPhysStiffness(E, p['poisson'], r, Es, p['steelPoisson'], r)[0]
+    Estar = _ballast.contactModulus(E, p['poisson'], Es, p['steelPoisson'])
     return (force / (4.0 / 3.0 * Estar * math.sqrt(r / 2))) ** (2.0 / 3.0)
 
 

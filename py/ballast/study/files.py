@@ -21,23 +21,23 @@ def writeAtomic(path, data):
     syncDir(os.path.dirname(path) or '.')
 
 
-def syncDir(path):
-    """fsync a directory: the names created, renamed or removed in it are on disk."""
-    fd = os.open(path, os.O_RDONLY | os.O_DIRECTORY)
+def _fsync(path, flags=0):
+    fd = os.open(path, os.O_RDONLY | flags)
     try:
         os.fsync(fd)
     finally:
         os.close(fd)
 
 
+def syncDir(path):
+    """fsync a directory: the names created, renamed or removed in it are on disk."""
+    _fsync(path, os.O_DIRECTORY)
+
+
 def syncTree(path):
     """fsync a file, or every file and directory below a directory, the directory last."""
     if not os.path.isdir(path):
-        fd = os.open(path, os.O_RDONLY)
-        try:
-            os.fsync(fd)
-        finally:
-            os.close(fd)
+        _fsync(path)
         return
     for d, dirs, names in os.walk(path, topdown=False):
         for n in names:
