@@ -31,6 +31,8 @@ def main(argv=None):
     where.add_argument('--scheduler-file', metavar='JSON', help='dask: instead, the file dask-scheduler --scheduler-file wrote')
     ar.add_argument('--out', metavar='DIR', help='study directory (default results/studies/<table name without .table>)')
     ar.add_argument('--packings', metavar='DIR', help='stored packings (default: "packings" next to --out, shared by the studies there)')
+    ar.add_argument('--records', metavar='DIR', help='also keep a compact record of every finished run here (a folder in the '
+                    'repository, e.g. docs/studies/NAME) and skip the rows recorded there: see docs/studies.md')
     ar.add_argument('--script', default=os.path.join(HERE, 'oedometer.py'), metavar='PY', help='the oedometer (default %(default)s)')
     ar.add_argument('--yade', default='yade', metavar='EXE', help='YADE executable on the machines that run (default %(default)s)')
     addArguments(ar, 'jobs', 'connectTimeout', 'lines', 'timeout', 'nice', 'progress')
@@ -58,10 +60,11 @@ def main(argv=None):
                 fh.write(text)
             sys.stderr.write('%s: %d rows\n' % (a.output, n) if a.output else '')
         elif a.dry_run:
-            Study(a.table, a.script, a.out, a.packings, a.lines).dryRun()
+            Study(a.table, a.script, a.out, a.packings, a.lines, records=a.records).dryRun()
         else:
             executor = makeExecutor(a.executor, a.jobs, a.scheduler, a.scheduler_file, a.connect_timeout, a.yade)
-            study = Study(a.table, a.script, a.out, a.packings, a.lines, a.yade, a.nice, a.timeout, a.ship, a.skip_failed, a.progress, a.verbose)
+            study = Study(a.table, a.script, a.out, a.packings, a.lines, a.yade, a.nice, a.timeout, a.ship, a.skip_failed, a.progress, a.verbose,
+                          a.records)
             rc = study.run(executor)
             if rc in (0, 1):  # finished
                 print('tables and figures: %s %s' % tuple(min(p, os.path.relpath(p), key=len) for p in (HERE + '/aggregate.py', study.out)))

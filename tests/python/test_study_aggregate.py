@@ -8,7 +8,7 @@ import os
 
 import pytest
 
-from ballast.study.aggregate import StudyData, aggregate, axisPositions, writeCsv
+from ballast.study.aggregate import StudyData, aggregate, axisPositions, effectTest, writeCsv
 from ballast.study.options import StudyError
 
 # (seed, Tc [s], delta at peak [m], crushed); seed 3 at Tc = 0.01 and seeds 2-3 at 0.04 did not finish
@@ -133,3 +133,34 @@ def test_peak_is_the_applied_peak_when_every_run_has_it(tmp_path):
     for st in data.stats():
         m, _ = byHand([v for k, v in applied.items() if k[1] == st['value']])
         assert st['deltaAtAppliedPeak_mean'] == pytest.approx(m, rel=1e-12)
+
+
+def test_kruskal_wallis_and_the_detectable_difference_by_hand(tmp_path):
+    # two values of Tc, displacements 1, 2, 3 mm and 4, 5, 6 mm: ranks 1-3 and 4-6, rank sums 6 and 15, N = 6:
+    # H = 12 / (N (N + 1)) (6²/3 + 15²/3) - 3 (N + 1) = 12/42 * 87 - 21 = 3.857142...; chi² with 1 degree of
+    # freedom: p = erfc(sqrt(H / 2)) = 0.049535; pooled standard deviation 1 mm, groups of 3:
+    # (1.959964 + 0.841621) * 1 mm * sqrt(2/3) = 2.28747 mm
+    runs = [(1, 0, 1e-3, 0), (2, 0, 2e-3, 0), (3, 0, 3e-3, 0), (1, 0.04, 4e-3, 0), (2, 0.04, 5e-3, 0), (3, 0.04, 6e-3, 0)]
+    data = StudyData(fabricate(tmp_path / 's', runs=runs, missing=[]))
+    t = effectTest(data)
+    assert t['H'] == pytest.approx(12 / 42 * 87 - 21, rel=1e-12)
+    assert t['p'] == pytest.approx(math.erfc(math.sqrt(t['H'] / 2)), rel=1e-9) and t['p'] == pytest.approx(0.049535, abs=1e-6)
+    assert t['pooledStd [m]'] == pytest.approx(1e-3, rel=1e-12)
+    assert t['detectableDifference [m]'] == pytest.approx(2.801585 * 1e-3 * math.sqrt(2 / 3), rel=1e-6)
+    assert (t['groups'], t['runs'], t['smallestGroup']) == (2, 6, 3)
+    # all the same: p = 1; one run per value: no test
+    same = [(s, tc, 1e-3, 0) for s, tc, _, _ in runs]
+    assert effectTest(StudyData(fabricate(tmp_path / 'same', runs=same, missing=[])))['p'] == 1.0
+    assert effectTest(StudyData(fabricate(tmp_path / 'one', runs=runs[::3], missing=[]))) is None
+    # aggregate writes it
+    aggregate(str(tmp_path / 's'), outDir=str(tmp_path / 'agg'), figures=False)
+    with open(str(tmp_path / 'agg' / 'test.json')) as fh:
+        assert json.load(fh)['H'] == pytest.approx(t['H'])
+
+
+def test_runs_csv_carries_every_parameter_of_every_run(tmp_path):
+    data = StudyData(fabricate(tmp_path / 's', more={'Fmax': lambda i: 1e6 + i}), 'Tc')
+    runsCsv, _ = writeCsv(data, str(tmp_path))
+    with open(runsCsv, newline='') as fh:
+        runs = list(csv.DictReader(fh))
+    assert [float(r['Fmax [N]']) for r in runs] == [1e6 + i for i in range(len(RUNS))]

@@ -1,9 +1,12 @@
 """A study's finished runs as tables and the paper's figures.
 
-    runs.csv         one line per finished run: the studied parameter, seed and the numbers of summary.json
+    runs.csv         one line per finished run: the studied parameter, seed, the numbers of summary.json
+                     and every parameter of the run
     stats.csv        one line per value of the studied parameter: number of runs, mean and standard
                      deviation (sample, n-1) of the displacement at peak force and of the other results
-    fd_curves.png    F-delta curves of all runs coloured by the studied parameter (paper, Fig. 4)
+    test.json        does the parameter change the displacement at peak? Kruskal-Wallis across its
+                     values, with the difference of two means the runs could have detected
+    fd_curves.png    F-delta curves, one panel per value of the studied parameter, a line per seed (Fig. 4)
     delta_peak.png   displacement at peak force against the parameter: one grey line per realization,
                      mean +- standard deviation as error bars (paper, Fig. 5)
 The studied parameter is the column of the table that varies besides the seed (or the one named).
@@ -16,6 +19,7 @@ import os
 
 import numpy as np
 
+from ..oedometer.parameters import PARAMS
 from .files import readSummary
 from .options import StudyError
 from .table import cellValue
@@ -33,6 +37,12 @@ LABELS = {'f': 'loading frequency f [Hz]', 'Tc': 'crushing period $T_c$ [s]', 'r
 
 def label(v):
     return '%g' % v if isinstance(v, float) else str(v)
+
+
+def valueLabel(param, v):
+    """'f = 8 Hz': a value of a parameter with its unit (from its declaration)."""
+    unit = PARAMS[param].unit if param in PARAMS else '-'
+    return '%s = %s%s' % (param, label(v), '' if unit in ('-', '') else ' ' + unit)
 
 
 def fmt(v):
@@ -125,9 +135,14 @@ def writeCsv(data, outDir):
     runsCsv = os.path.join(outDir, 'runs.csv')
     with open(runsCsv, 'w', newline='') as fh:
         w = csv.writer(fh)
-        w.writerow(['line', 'runId', data.param, 'seed'] + ['%s [%s]' % kv for kv in RESULTS])
+        # every parameter of every run, as the run read it, after the results
+        names = sorted(set(k for r in data.runs for k in (r['summary'].get('params') or {})) - {data.param, 'seed'})
+        w.writerow(['line', 'runId', data.param, 'seed'] + ['%s [%s]' % kv for kv in RESULTS] + [
+            '%s [%s]' % (k, PARAMS[k].unit if k in PARAMS else '-') for k in names])
         for r in sorted(data.runs, key=lambda r: r['line']):
-            w.writerow([r['line'], r['runId'], label(r['value']), r['seed']] + [fmt(r['summary'].get(k)) for k, _ in RESULTS])
+            params = r['summary'].get('params') or {}
+            w.writerow([r['line'], r['runId'], label(r['value']), r['seed']] + [fmt(r['summary'].get(k)) for k, _ in RESULTS] +
+                       [fmt(params.get(k)) for k in names])
     statsCsv = os.path.join(outDir, 'stats.csv')
     units = dict(RESULTS)
     with open(statsCsv, 'w', newline='') as fh:
@@ -161,30 +176,41 @@ def plots(data, outDir, xlog='auto'):
     matplotlib.use('Agg')
     import matplotlib.pyplot as plt
     from matplotlib.lines import Line2D
-    cmap = plt.get_cmap('tab10' if len(data.values) <= 10 else 'viridis')
-    color = {v: cmap(i if len(data.values) <= 10 else i / max(len(data.values) - 1, 1)) for i, v in enumerate(data.values)}
-    styles = ['-', '--', ':', '-.', (0, (5, 1, 1, 1, 1, 1))]
-    style = {s: styles[i % len(styles)] for i, s in enumerate(data.seeds)}
     name = os.path.basename(data.dir)
 
-    # Fig. 4: F-delta of every run
-    fig, ax = plt.subplots(figsize=(8, 5.5))
-    for r in sorted(data.runs, key=lambda r: (data.values.index(r['value']), str(r['seed']))):
-        try:
-            a = np.loadtxt(os.path.join(r['dir'], 'fd.csv'), delimiter=',', skiprows=1, ndmin=2)
-        except (OSError, ValueError):
-            continue
-        # the paper's F is the load applied (column 6 of the plate load's fd.csv); else the grains' force
-        F = a[:, 5] if a.shape[1] > 5 and np.isfinite(a[:, 5]).all() else a[:, 1]
-        ax.plot(a[:, 2] * 1e3, F / 1e3, linestyle=style[r['seed']], color=color[r['value']], lw=0.9)
-    leg = ax.legend(handles=[Line2D([], [], color=color[v], lw=2, label='%s = %s' % (data.param, label(v))) for v in data.values],
-                    fontsize=8, loc='upper left')
-    if len(data.seeds) <= 10:
-        ax.add_artist(leg)
-        ax.legend(handles=[Line2D([], [], color='k', linestyle=style[s], lw=1, label='seed %s' % s) for s in data.seeds],
-                  fontsize=8, loc='lower right')
-    fd = save(fig, ax, r'plate displacement $\delta$ [mm]', 'force F [kN]', '%s: %d runs, %d values of %s, %d realizations' % (
-        name, len(data.runs), len(data.values), data.param, len(data.seeds)), os.path.join(outDir, 'fd_curves.png'))
+    # Fig. 4: F-delta of every run, a panel per value (small multiples), a colour per seed
+    nv = len(data.values)
+    ncol = min(nv, 3)
+    nrow = -(-nv // ncol)
+    fig, axes = plt.subplots(nrow, ncol, figsize=(4.2 * ncol, 3.3 * nrow + 0.6), sharex=True, sharey=True, squeeze=False)
+    seedColor = {s: plt.get_cmap('tab10' if len(data.seeds) <= 10 else 'tab20')(i % 20) for i, s in enumerate(data.seeds)}
+    for k, v in enumerate(data.values):
+        ax = axes[k // ncol][k % ncol]
+        for r in sorted([r for r in data.runs if r['value'] == v], key=lambda r: str(r['seed'])):
+            try:
+                a = np.loadtxt(os.path.join(r['dir'], 'fd.csv'), delimiter=',', skiprows=1, ndmin=2)
+            except (OSError, ValueError):
+                continue
+            # the paper's F is the load applied (column 6 of the plate load's fd.csv); else the grains' force
+            F = a[:, 5] if a.shape[1] > 5 and np.isfinite(a[:, 5]).all() else a[:, 1]
+            ax.plot(a[:, 2] * 1e3, F / 1e3, color=seedColor[r['seed']], lw=0.9, label='seed %s' % r['seed'])
+        ax.set_title('%s (%d runs)' % (valueLabel(data.param, v), sum(r['value'] == v for r in data.runs)), fontsize=9)
+        ax.grid(alpha=0.3)
+        if k % ncol == 0:
+            ax.set_ylabel('applied force F [kN]')
+        if k // ncol == nrow - 1 or k + ncol >= nv:
+            ax.set_xlabel(r'plate displacement $\delta$ [mm]')
+            ax.tick_params(labelbottom=True)
+    for k in range(nv, nrow * ncol):
+        axes[k // ncol][k % ncol].set_visible(False)
+    if len(data.seeds) <= 20:
+        fig.legend(handles=[Line2D([], [], color=seedColor[s], lw=1.5, label='seed %s' % s) for s in data.seeds],
+                   loc='upper center', ncol=min(len(data.seeds), 10), fontsize=7, frameon=False)
+    fig.suptitle('%s: %d runs, %d realizations' % (name, len(data.runs), len(data.seeds)), fontsize=10, y=0.995)
+    fig.tight_layout(rect=(0, 0, 1, 0.93 if len(data.seeds) <= 10 else 0.9))
+    fd = os.path.join(outDir, 'fd_curves.png')
+    fig.savefig(fd, dpi=110)
+    plt.close(fig)
 
     # Fig. 5: displacement at peak force against the parameter
     x, ticks, scale = axisPositions(data, xlog)
@@ -207,6 +233,30 @@ def plots(data, outDir, xlog='auto'):
               'applied ' if data.peak == 'deltaAtAppliedPeak' else ''),
               '%s: %d runs, %d realizations' % (name, len(data.runs), len(data.seeds)), os.path.join(outDir, 'delta_peak.png'))
     return fd, dp
+
+
+def effectTest(data, alpha=0.05, power=0.8):
+    """Does the studied parameter change the displacement at peak? The Kruskal-Wallis H test across
+    its values (scipy.stats.kruskal; ties corrected) and the smallest difference of two means the
+    runs could have detected: a two-sided test at `alpha` finds it with probability `power` given the
+    pooled standard deviation s and the smallest group n, (z_(1-alpha/2) + z_power) s sqrt(2/n).
+    None with fewer than two values of two runs each."""
+    from scipy import stats
+    groups = [np.array([r['summary'][data.peak] for r in data.runs if r['value'] == v]) for v in data.values]
+    groups = [g for g in groups if len(g) >= 2]
+    if len(groups) < 2:
+        return None
+    try:
+        H, p = stats.kruskal(*groups)
+    except ValueError:  # every displacement the same: no evidence of any effect
+        H, p = 0.0, 1.0
+    dof = sum(len(g) - 1 for g in groups)
+    pooled = float(np.sqrt(sum((len(g) - 1) * np.var(g, ddof=1) for g in groups) / dof))
+    n = min(len(g) for g in groups)
+    z = stats.norm.ppf(1 - alpha / 2) + stats.norm.ppf(power)
+    return {'test': 'Kruskal-Wallis', 'quantity': data.peak, 'parameter': data.param, 'groups': len(groups),
+            'runs': int(sum(len(g) for g in groups)), 'H': float(H), 'p': float(p), 'alpha': alpha, 'power': power,
+            'pooledStd [m]': pooled, 'smallestGroup': n, 'detectableDifference [m]': float(z * pooled * np.sqrt(2 / n))}
 
 
 def save(fig, ax, xlabel, ylabel, title, path):
@@ -245,6 +295,14 @@ def aggregate(path, param=None, outDir=None, xlog='auto', figures=True):
         print('%-12s %3d  %10.2f +- %8.2f  %10.2f +- %8.2f  %6.1f +- %5.1f' % (
             label(st['value']), st['n'], st[data.peak + '_mean'] * 1e3, st[data.peak + '_std'] * 1e3, st['deltaMax_mean'] * 1e3,
             st['deltaMax_std'] * 1e3, st['nCrushed_mean'], st['nCrushed_std']))
+    test = effectTest(data)
+    if test is not None:
+        with open(os.path.join(outDir, 'test.json'), 'w') as fh:
+            json.dump(test, fh, indent=1)
+        print('Kruskal-Wallis across %s: H = %.3g, p = %.3g (%d groups, %d runs); a difference of two means of %.1f mm '
+              'would have been found with probability %g at the %g level' % (
+                  data.param, test['H'], test['p'], test['groups'], test['runs'], test['detectableDifference [m]'] * 1e3,
+                  test['power'], test['alpha']))
     print('tables: %s, %s' % (runsCsv, statsCsv))
     if figures:
         print('figures: %s, %s' % plots(data, outDir, xlog))

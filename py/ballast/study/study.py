@@ -10,7 +10,9 @@ A study directory holds
     table, study.json   the table as it was run (the runs read their row from it, as under yade-batch)
                         and the study's description (rows, run ids, script, code sha1)
 A run counts as finished when runs/<run id>/summary.json parses (files.readSummary, the test of
-the aggregation too): a study started again skips those and redoes the rest.
+the aggregation too): a study started again skips those and redoes the rest. With `records` (a folder
+in the repository, ballast.study.records) every finished run also leaves a compact record there, and
+a row whose record exists counts as finished: a study goes on from the records on any machine.
 
 Packings are stored in the packings directory (default: 'packings' next to the study directory,
 shared by the studies there) under the name ballast.oedometer.parameters.packingKey gives, and
@@ -30,6 +32,7 @@ from ..names import fmtTime
 from ..oedometer.parameters import packingKey
 from .files import codeSha1, readSummary, sha1, writeAtomic
 from .options import OPTIONS, StudyError, optionValue
+from .records import hasRecord, keepRecord, recordPath, writeIndex
 from .runner import clearWork, failedLog, finalizeShipped, lastError
 from .table import Table
 
@@ -48,11 +51,13 @@ class Study:
     (default 'packings' next to `out`); lines: yade-batch's --lines (default: every row); yade: the
     executable on the machines that run; nice, timeout, progress: see options.OPTIONS; ship: send
     script, table and packings with every Dask task and the results back, even to workers that see
-    `out`; skipFailed: do not redo runs that failed before; verbose: a line when a run starts.
-    Everything is checked here, before any run: a bad table row is refused naming line and column."""
+    `out`; skipFailed: do not redo runs that failed before; verbose: a line when a run starts;
+    records: a folder for the compact records of the finished runs (records.py), whose rows are
+    skipped. Everything is checked here, before any run: a bad table row is refused naming line and column."""
 
     def __init__(self, table, script, out=None, packings=None, lines=None, yade='yade', nice=OPTIONS['nice'].default,
-                 timeout=None, ship=False, skipFailed=False, progress=OPTIONS['progress'].default, verbose=False):
+                 timeout=None, ship=False, skipFailed=False, progress=OPTIONS['progress'].default, verbose=False,
+                 records=None):
         if not os.path.isfile(table):
             raise StudyError('TABLE: no such file: %s' % table)
         if not os.path.isfile(script):
@@ -69,7 +74,8 @@ class Study:
         self.params = self.table.check()  # line -> every parameter of its run
         self.out = os.path.abspath(out or defaultOut(table))
         self.packings = os.path.abspath(packings or os.path.join(os.path.dirname(self.out), 'packings'))
-        for name, p in (('--out', self.out), ('--packings', self.packings)):
+        self.records = os.path.abspath(records) if records else None
+        for name, p in (('--out', self.out), ('--packings', self.packings)) + ((('--records', self.records),) if records else ()):
             if ':' in p:
                 raise StudyError("%s: %s contains ':', which YADE_BATCH (table:line) cannot carry" % (name, p))
             if os.path.exists(p) and not os.path.isdir(p):
@@ -90,10 +96,13 @@ class Study:
         return packingKey(self.params[line])[1]
 
     def finishedRow(self, line):
-        """None if the run is not finished; else its row.json ({} if unreadable)."""
-        d = os.path.join(self.out, 'runs', self.table.runId(line))
+        """None if the run is not finished (in runs/, or as a record); else its row.json ({} if unreadable)."""
+        rid = self.table.runId(line)
+        d = os.path.join(self.out, 'runs', rid)
         if readSummary(d)[0] is None:
-            return None
+            if not (self.records and hasRecord(self.records, rid)):
+                return None
+            d = recordPath(self.records, rid)
         try:
             with open(os.path.join(d, 'row.json')) as fh:
                 return json.load(fh)
@@ -103,6 +112,12 @@ class Study:
     def dryRun(self):
         for n in self.lines:
             print('%4d  %-40s %s' % (n, self.table.runId(n), 'to run' if self.finishedRow(n) is None else 'finished (skipped)'))
+
+    def keepRecord(self, line):
+        """The record of the finished run of `line` into `records` (if a records folder is given)."""
+        rid = self.table.runId(line)
+        if self.records and os.path.isdir(os.path.join(self.out, 'runs', rid)):
+            keepRecord(os.path.join(self.out, 'runs', rid), self.records, rid)
 
     def lock(self):
         import fcntl
@@ -146,6 +161,13 @@ class Study:
                 'codeSha1': self.codeSha1, 'packings': self.packings, 'columns': self.table.columns,
                 'rows': [{'line': n, 'runId': self.table.runId(n), 'row': r} for n, r in self.table.rows]}
         writeAtomic(os.path.join(self.out, 'study.json'), json.dumps(info, indent=1))
+        if self.records:
+            writeIndex(self.records, info)
+            # runs finished before the records were asked for (or before a record was lost) get theirs
+            for n in self.lines:
+                if not hasRecord(self.records, self.table.runId(n)) and readSummary(
+                        os.path.join(self.out, 'runs', self.table.runId(n)))[0] is not None:
+                    self.keepRecord(n)
         self.status = {}
         for n in self.lines:
             failed = os.path.isdir(os.path.join(self.out, 'failed', self.table.runId(n)))
@@ -272,6 +294,11 @@ class Progress:
                 self.counts['ok' if ok else 'failed'] += 1
             if ok and res.get('wall'):
                 self.walls.append(res['wall'])
+            if ok:
+                try:
+                    st.keepRecord(n)
+                except (OSError, ValueError) as e:  # the run itself is finished and kept in runs/
+                    st.say('warning: no record of %s in %s: %s' % (res['runId'], st.records, e))
             st.status[n] = {'status': 'finished' if ok else res['status'], 'rc': res.get('rc'), 'wall': res.get('wall'),
                             'host': res.get('host', ''), 'error': res.get('error', '')}
             rec = {k: res.get(k) for k in ('runId', 'line', 'status', 'rc', 'host', 'started', 'wall', 'error', 'command')}

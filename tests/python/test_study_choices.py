@@ -1,0 +1,60 @@
+"""Tests of ballast.study.choices on fabricated onset studies (study.json, summary.json, checks.csv and
+fd.csv written here, no yade): the strength that starts each criterion's crushing at the paper's
+onset force, worked out by hand."""
+import json
+import os
+
+import numpy as np
+import pytest
+
+from ballast.study.choices import onsetStrengths
+
+
+def fabricate(d, slopes, crushed=0):
+    """An onset study: per (seed, criterion) the largest stress ratio grows as slope * t over 1000
+    checks in 0.1 s (run with ft0 = 1e9 Pa m), the applied force as 1e7 N/s * t."""
+    rows = []
+    for (seed, crit), slope in slopes.items():
+        rid = 'seed=%d,criterion=%s' % (seed, crit)
+        run = os.path.join(d, 'runs', rid)
+        os.makedirs(run)
+        t = np.linspace(0, 0.1, 1001)
+        with open(os.path.join(run, 'checks.csv'), 'w') as fh:
+            fh.write('t,iter,nCrushed,maxStressRatio\n')
+            fh.writelines('%.9g,%d,0,%.9g\n' % (x, k, slope * x) for k, x in enumerate(t))
+        with open(os.path.join(run, 'fd.csv'), 'w') as fh:
+            fh.write('t,F,delta,nCrushed,nAbraded,Fapplied\n')
+            fh.writelines('%.9g,0,0,0,0,%.9g\n' % (x, 1e7 * x) for x in t[::10])
+        with open(os.path.join(run, 'summary.json'), 'w') as fh:
+            json.dump({'params': {'seed': seed, 'criterion': crit, 'ft0': 1e9}, 'nCrushed': crushed}, fh)
+        rows.append({'runId': rid, 'line': len(rows) + 2, 'row': {}})
+    with open(os.path.join(d, 'study.json'), 'w') as fh:
+        json.dump({'rows': rows, 'columns': ['seed', 'criterion']}, fh)
+    return str(d)
+
+
+def test_each_criterion_gets_the_strength_of_the_paper_onset(tmp_path):
+    # seed 1: sigma_e r = 1e9 * 0.05 t / s... reaches ft0 = 3.1e6 at t = 3.1e6 / (1e9 * 0.05) = 0.062 s, F = 620 kN;
+    # F/d^2 r grows at 0.6 of it there: 1.86e6; seed 2: sigma_e at 0.04 / s reaches it at 0.0775 s, F = 775 kN,
+    # F/d^2 at 0.7 of it: 2.17e6. Mean 2.015e6, sample std |2.17 - 1.86|e6 / sqrt(2) = 2.192e5
+    d = fabricate(tmp_path / 'onset', {(1, 'vonMises'): 0.05, (1, 'maxContactForce'): 0.03,
+                                       (2, 'vonMises'): 0.04, (2, 'maxContactForce'): 0.028})
+    res = onsetStrengths(d)
+    s1, s2 = res['seeds'][1], res['seeds'][2]
+    assert s1['onsetTime'] == pytest.approx(0.062, abs=1e-4) and s1['onsetForce'] == pytest.approx(6.2e5, rel=2e-3)
+    assert s2['onsetTime'] == pytest.approx(0.0775, abs=1e-4) and s2['onsetForce'] == pytest.approx(7.75e5, rel=2e-3)
+    # the check where the reference first reaches ft0 (a step of 1e-4 s: within 1e9 * 0.05 * 1e-4 = 5e3 Pa m)
+    assert s1['vonMises'] == pytest.approx(3.1e6, abs=5e3) and s1['maxContactForce'] == pytest.approx(1.86e6, abs=3e3)
+    assert s2['maxContactForce'] == pytest.approx(2.17e6, abs=3e3)
+    assert res['mean']['maxContactForce'] == pytest.approx(2.015e6, abs=3e3)
+    assert res['std']['maxContactForce'] == pytest.approx(0.31e6 / np.sqrt(2), abs=4e3)
+
+
+def test_a_reference_that_never_reaches_its_strength_and_a_run_that_crushed(tmp_path):
+    # sigma_e r reaches at most 1e9 * 0.01 * 0.1 = 1e6 < 3.1e6: no onset in the run, the seed is left out
+    res = onsetStrengths(fabricate(tmp_path / 'a', {(1, 'vonMises'): 0.01, (1, 'majorPrincipal'): 0.02,
+                                                     (2, 'vonMises'): 0.05, (2, 'majorPrincipal'): 0.06}))
+    assert res['seeds'][1] == {'onsetForce': None}
+    assert res['mean']['majorPrincipal'] == pytest.approx(3.1e6 * 1.2, abs=6e3) and np.isnan(res['std']['majorPrincipal'])
+    with pytest.raises(ValueError, match='3 grains crushed; the onset study loads without crushing'):
+        onsetStrengths(fabricate(tmp_path / 'b', {(1, 'vonMises'): 0.05}, crushed=3))

@@ -1,0 +1,150 @@
+"""Tests of ballast.study.records (the compact records a study keeps in the repository) and of the
+study runner that goes on from them, with the stand-in for yade of study_fakes.py: no simulation."""
+import csv
+import json
+import os
+
+import numpy as np
+import pytest
+
+from ballast.study import LocalExecutor, Study, StudyData
+from ballast.study.options import StudyError
+from ballast.study.records import MAX_FD_ROWS, hasRecord, keepRecord, recordPath, thinChecks, thinFd
+from study_fakes import writeFakeYade
+
+TABLE = 'seed! f!\n1 2\n1 4\n2 2\n'
+IDS = ['seed=1,f=2', 'seed=1,f=4', 'seed=2,f=2']
+
+
+def curve(n=100000):
+    """One load cycle of eq. 8 (F = Fmax/2 (1 - cos 2 pi t)) on a sample that settles 60 mm in one jump at
+    t = 0.4 (one crushed grain per 100 rows during the jump) and saws its measured force after it."""
+    t = np.linspace(0, 1, n)
+    Fa = 1.5e6 / 2 * (1 - np.cos(2 * np.pi * t))
+    delta = 1e-4 * t + 0.06 * np.clip((t - 0.4) / 0.01, 0, 1)
+    F = Fa * (1 + 0.3 * np.sin(2 * np.pi * 300 * t) * (t > 0.4))
+    crushed = np.where(t > 0.4, np.minimum((t - 0.4) * n / 100, 10).astype(int), 0)
+    return {'t': t, 'F': F, 'delta': delta, 'nCrushed': crushed, 'nAbraded': 0 * t, 'Fapplied': Fa}
+
+
+def test_a_thinned_curve_keeps_every_step_of_its_quantities_within_its_resolution():
+    c = curve()
+    kept = thinFd(c)
+    assert len(kept) <= MAX_FD_ROWS and kept[0] == 0 and kept[-1] == len(c['t']) - 1
+    assert np.all(np.diff(kept) > 0)
+    for q in ('delta', 'Fapplied', 'F'):
+        assert np.argmax(c[q]) in kept and np.argmin(c[q]) in kept
+    # every start of a crush is kept: the jump's steps are in the record
+    starts = np.flatnonzero(np.diff(c['nCrushed']) != 0) + 1
+    assert set(starts) <= set(kept)
+    # between two kept rows a quantity stays within one step of its value at the first: the record drawn
+    # as steps is off by less than a hundredth of each range (the step is 1/200 of it, doubled at most
+    # once here: 2 quantities of ~200-400 levels each)
+    prev = kept[np.searchsorted(kept, np.arange(len(c['t'])), side='right') - 1]
+    for q in ('delta', 'Fapplied'):
+        err = np.max(np.abs(c[q] - c[q][prev])) / np.ptp(c[q])
+        assert err < 1 / 100, (q, err)
+    # a short curve is kept whole
+    short = {k: v[:MAX_FD_ROWS] for k, v in c.items()}
+    assert np.array_equal(thinFd(short), np.arange(MAX_FD_ROWS))
+
+
+def writeRun(d, n=20000):
+    """A finished run as the oedometer leaves it: summary.json, row.json, fd.csv, checks.csv (checks 3
+    and 7 of 10 crushed grains), psd.csv."""
+    os.makedirs(d)
+    c = curve(n)
+    with open(os.path.join(d, 'fd.csv'), 'w') as fh:
+        fh.write('t,F,delta,nCrushed,nAbraded,Fapplied\n')
+        for k in range(n):
+            fh.write('%.9g,%.9g,%.9g,%d,%d,%.9g\n' % tuple(c[q][k] for q in ('t', 'F', 'delta', 'nCrushed', 'nAbraded', 'Fapplied')))
+    with open(os.path.join(d, 'checks.csv'), 'w') as fh:  # 1000 checks, the ratio a sine, crushes at 300 and 700
+        fh.write('t,iter,nCrushed,maxStressRatio\n')
+        for k in range(1000):
+            fh.write('%g,%d,%d,%.9g\n' % (1e-3 * k, 100 * k, {300: 2, 700: 1}.get(k, 0), 0.8 + 0.6 * np.sin(np.pi * k / 1000)))
+    for name, data in (('summary.json', {'params': {'seed': 1, 'f': 2.0}, 'deltaAtPeak': 0.06}), ('row.json', {'row': {'seed': 1}})):
+        with open(os.path.join(d, name), 'w') as fh:
+            json.dump(data, fh)
+    with open(os.path.join(d, 'psd.csv'), 'w') as fh:
+        fh.write('size,before,after\n0.0315,0,1\n')
+    return c
+
+
+def test_a_record_is_small_and_keeps_what_the_figures_and_tables_need(tmp_path):
+    run = str(tmp_path / 'run')
+    c = writeRun(run)
+    dest = keepRecord(run, str(tmp_path / 'rec'), 'seed=1,f=2')
+    assert dest == recordPath(str(tmp_path / 'rec'), 'seed=1,f=2') and hasRecord(str(tmp_path / 'rec'), 'seed=1,f=2')
+    for name in ('summary.json', 'row.json', 'psd.csv'):
+        assert open(os.path.join(dest, name)).read() == open(os.path.join(run, name)).read()
+    size = sum(os.path.getsize(os.path.join(dest, f)) for f in os.listdir(dest))
+    assert size < 60e3 < os.path.getsize(os.path.join(run, 'fd.csv'))
+    with open(os.path.join(dest, 'fd.csv'), newline='') as fh:
+        rows = list(csv.DictReader(fh))
+    assert list(rows[0]) == ['t', 'F', 'delta', 'nCrushed', 'nAbraded', 'Fapplied'] and len(rows) <= MAX_FD_ROWS
+    assert max(float(r['F']) for r in rows) == pytest.approx(np.max(c['F']), rel=1e-8)  # the peak, to the CSV's digits
+    with open(os.path.join(dest, 'checks.csv'), newline='') as fh:
+        checks = list(csv.DictReader(fh))
+    assert [(r['iter'], r['nCrushed']) for r in checks if r['nCrushed'] != '0'] == [('30000', '2'), ('70000', '1')]
+    # the ratio's curve to a step of its range (0.6): 1/200, doubled once here (200 steps up and 200 down are
+    # more than 400 rows), so its running maximum is off by less than 0.006 at any check
+    t = np.array([float(r['t']) for r in checks])
+    ratio = np.maximum.accumulate([float(r['maxStressRatio']) for r in checks])
+    every = np.arange(1000)
+    exact = np.maximum.accumulate(0.8 + 0.6 * np.sin(np.pi * every / 1000))
+    fromRecord = ratio[np.searchsorted(t, 1e-3 * every + 1e-12, side='right') - 1]
+    assert np.max(np.abs(fromRecord - exact)) < 0.6 / 100 and len(checks) <= 400
+    with open(os.path.join(dest, 'record.json')) as fh:
+        info = json.load(fh)
+    assert info['fdRows'] == {'run': 20000, 'record': len(rows)}
+    assert info['checks'] == {'run': 1000, 'record': len(checks), 'crushing': 2, 'maxStressRatio': pytest.approx(1.4)}
+    assert len(thinChecks({'nCrushed': np.ones(1000), 'maxStressRatio': np.ones(1000)})) == 400  # crushes at every check
+    # an unfinished run has no record
+    os.makedirs(str(tmp_path / 'cut'))
+    with pytest.raises(ValueError, match='not a finished run: no summary.json'):
+        keepRecord(str(tmp_path / 'cut'), str(tmp_path / 'rec'), 'cut')
+
+
+@pytest.fixture
+def setup(tmp_path):
+    (tmp_path / 'tiny.table').write_text(TABLE)
+    (tmp_path / 'oedometer.py').write_text('# the oedometer\n')
+    return {'table': str(tmp_path / 'tiny.table'), 'script': str(tmp_path / 'oedometer.py'), 'yade': writeFakeYade(tmp_path),
+            'records': str(tmp_path / 'docs' / 'tiny')}
+
+
+def test_a_study_goes_on_from_its_records_on_another_machine(setup, tmp_path, capsys):
+    # session 1 runs two rows, with records
+    assert Study(out=str(tmp_path / 'machine1'), lines=[2, 3], **setup).run(LocalExecutor(2)) == 0
+    rec = setup['records']
+    assert sorted(os.listdir(os.path.join(rec, 'runs'))) == IDS[:2]
+    with open(os.path.join(rec, 'study.json')) as fh:
+        index = json.load(fh)
+    assert index['table'] == 'tiny.table' and 'script' not in index and [r['runId'] for r in index['rows']] == IDS
+    # the records aggregate like a study directory; the row not run yet is missing
+    data = StudyData(rec)
+    assert data.param == 'f' and data.missing == [IDS[2]] and data.stats()[0]['deltaAtPeak_mean'] == pytest.approx(1e-3)
+    capsys.readouterr()
+    # session 2, a fresh clone on another machine: no study directory, only the records
+    assert Study(out=str(tmp_path / 'machine2'), **setup).run(LocalExecutor(2)) == 0
+    assert '3 rows, 2 finished before (skipped), 1 to run' in capsys.readouterr().out
+    assert os.listdir(os.path.join(str(tmp_path / 'machine2'), 'runs')) == [IDS[2]] and hasRecord(rec, IDS[2])
+    # a record made from other cells than the table now has is refused before any run
+    rowJson = os.path.join(rec, 'runs', IDS[0], 'row.json')
+    with open(rowJson) as fh:
+        good = fh.read()
+    made = json.loads(good)
+    made['row']['f'] = 3
+    with open(rowJson, 'w') as fh:
+        json.dump(made, fh)
+    with pytest.raises(StudyError, match='were made from other values than the table now gives: seed=1,f=2'):
+        Study(out=str(tmp_path / 'machine3'), **setup).run(LocalExecutor(1))
+    with open(rowJson, 'w') as fh:
+        fh.write(good)
+    # runs finished before records were asked for get theirs when the study starts again
+    other = str(tmp_path / 'docs' / 'other')
+    Study(**dict(setup, out=str(tmp_path / 'machine1'), records=other)).run(LocalExecutor(2))
+    assert sorted(os.listdir(os.path.join(other, 'runs'))) == sorted(IDS)
+    with open(os.path.join(other, 'runs', IDS[0], 'summary.json')) as fh, \
+            open(os.path.join(str(tmp_path / 'machine1'), 'runs', IDS[0], 'summary.json')) as fh2:
+        assert fh.read() == fh2.read()
