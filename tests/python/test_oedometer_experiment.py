@@ -196,6 +196,11 @@ def test_checks_log(weak):
     assert np.sum(c[:, 2]) == s['nCrushed']
     assert np.all(np.diff(c[:, 1]) > 0)
     assert np.all(c[c[:, 2] > 0, 3] > 1)  # a check that crushed saw sigma_e / f_t > 1
+    # the checks fall at loading times k T_c: the first one T_c after the loading started, each next one
+    # T_c after the step of the one before, i.e. late by less than a step (dt < 1e-6 s here)
+    tc = run.p['Tc']
+    assert tc <= c[0, 0] < tc + 1e-6
+    assert np.all((np.diff(c[:, 0]) >= tc * (1 - 1e-9)) & (np.diff(c[:, 0]) < tc + 1e-6))
 
 
 def test_mass_ledger(weak):

@@ -203,7 +203,11 @@ class Oedometer:
             period = {'virtPeriod': p['Tc']} if p['Tc'] > 0 else {'iterPeriod': 1}
             # every engine parameter the experiment declares (parameters.PARAMS reuses CRUSH's declarations)
             own = {k: p[k] for k in CRUSH if k in p}
-            extra.append(BallastCrushEngine(mask=0, label='crush', **period, **own))
+            crush = BallastCrushEngine(mask=0, label='crush', **period, **own)
+            # checks at loading times k T_c (not at scene times, which include the preparation): where they fall
+            # in the load cycle is then set by T_c and f alone (docs/oedometer.md, "Crushing period")
+            crush.virtLast = self.loading.t0
+            extra.append(crush)
         if p['abrasion']:
             extra.append(BallastAbrasionEngine(strength=p['strength'], gamma=p['gamma'], rMin=p['rMin'], mask=0,
                                                iterPeriod=p['abrasionPeriod'], label='abrasion'))

@@ -98,7 +98,7 @@ class Outputs:
                             label=self.RECORDER)]
         if exp.engine('crush') is not None:  # fires at the steps the crushing engine does
             kw = {'virtPeriod': p['Tc']} if p['Tc'] > 0 else {'iterPeriod': 1}
-            engines.append(PyRunner(command=command('outputs', 'logCheck'), label=self.CHECKLOG, **kw))
+            engines.append(PyRunner(command=command('outputs', 'logCheck'), label=self.CHECKLOG, virtLast=exp.loading.t0, **kw))
         # at the end of every cycle (the first step past it; load() records the last one itself)
         engines.append(PyRunner(command=command('outputs', 'cycleEnd'), virtPeriod=exp.T, virtLast=O.time,
                                 label=self.CYCLES))
