@@ -267,6 +267,8 @@ class BallastCrushEngine(_BallastEngine):
             d['maxDamage'] = float(np.max(F[ids, 0]))
         changed = self._recordEnergies()
         hit = np.flatnonzero(crush)
+        if 0 < self.maxPerCheck < len(hit):  # sequential crushing: the most overloaded first
+            hit = hit[np.argsort(-(se[hit] / strength[hit]), kind='stable')[:self.maxPerCheck]]
         if len(hit):
             pw0 = self._dtBefore()
             for k in hit:

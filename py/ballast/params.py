@@ -296,6 +296,10 @@ CRUSH = dict({
     'growTime': Param(0.01, 's', "keep='volume': simulated time over which the fragments grow back to the parent's "
                       "volume, a step at every check (0: at the next check at once, which throws neighbours out)",
                       nonNegative, NUMBER_NONNEGATIVE),
+    'maxPerCheck': Param(0, '-', 'crush at most this many grains per check, the most overloaded first (the '
+                         'stress over the strength); the others wait for the next check if still over it. 0: every '
+                         'grain over its strength at once (the paper)', intBetween(0, INT64_MAX),
+                         'an integer in [0, 2^63 - 1]'),
     # fatigue, beyond the paper (docs/fatigue.md): Basquin-Miner damage D on the peaks of s = sigma_e / f_t
     'fatigue': Param(False, '-', 'fatigue: each peak s_p of a grain\'s stress ratio s = sigma_e / f_t takes '
                      '(1 - s_p) s_p^b off its strength (D) and it crushes when s > 1 - D, after s_p^-b equal peaks '

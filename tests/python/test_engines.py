@@ -746,3 +746,26 @@ def test_fatigue_damage_survives_save_and_load(monkeypatch, tmp_path):
     O.run(51 * PER_CYCLE - 7, True)
     e = builtins.crush.events
     assert len(e) == 1 and 60 * PER_CYCLE <= e[0]['iter'] < 61 * PER_CYCLE
+
+
+@pytest.mark.parametrize('maxPerCheck', [0, 1, 3])
+def test_max_per_check_crushes_the_most_overloaded_grains_first(maxPerCheck):
+    """Sequential crushing (maxPerCheck = N): of the grains over their strength, the N with the largest
+    sigma_e / f_t crush at a check, the others wait; 0 crushes all of them (the paper). The strength is
+    set so that about half the grains of a settled box are over it."""
+    packedBox(n=3)
+    ids = np.array([b.id for b in O.bodies if b.dynamic])
+    radii = np.array([b.shape.radius for b in O.bodies if b.dynamic])
+    probe = BallastCrushEngine(ft0=1.0, rMin=0.0)
+    se, ft, _ = probe.evaluate(ids, radii)        # stress and strength at ft0 = 1 Pa m
+    ratio = se / ft
+    ft0 = float(np.median(ratio))                 # half the grains have sigma_e / f_t > 1 at this ft0
+    over = ids[ratio > ft0]
+    expected = over if maxPerCheck == 0 else ids[np.argsort(-ratio)[:maxPerCheck]]
+    assert len(over) >= 5
+    # a check at the next step, before anything moves much: rMin above the fragments, no cascade
+    crush = add(BallastCrushEngine(ft0=ft0, rMin=0.5 * radii.min(), iterPeriod=1, maxPerCheck=maxPerCheck, nDo=1))
+    O.dt = 1e-9
+    O.run(1, True)
+    assert sorted(e['id'] for e in crush.events) == sorted(expected.tolist())
+    assert crush.nCrushed == len(expected)

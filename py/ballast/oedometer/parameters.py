@@ -94,6 +94,7 @@ PARAMS = {
     'weibullModulus': CRUSH['weibullModulus'],
     'keep': CRUSH['keep'],
     'growTime': CRUSH['growTime'],
+    'maxPerCheck': CRUSH['maxPerCheck'],
     'fatigue': CRUSH['fatigue'],
     'fatigueExponent': CRUSH['fatigueExponent'],
     'fatigueEndurance': CRUSH['fatigueEndurance'],
