@@ -164,3 +164,20 @@ def test_runs_csv_carries_every_parameter_of_every_run(tmp_path):
     with open(runsCsv, newline='') as fh:
         runs = list(csv.DictReader(fh))
     assert [float(r['Fmax [N]']) for r in runs] == [1e6 + i for i in range(len(RUNS))]
+
+
+def test_crushing_checks_from_the_per_check_log(tmp_path):
+    # a run whose checks crushed 2 grains at sigma/f_t = 1.3 and 1 at 1.1 (and saw 0.9 and 0.5 without crushing):
+    # 2 crushing checks, 1.5 grains each, largest ratio 1.3, mean 1.2; a run whose log has no crush: 0 checks
+    d = fabricate(tmp_path / 's')
+    runs = sorted(os.listdir(os.path.join(d, 'runs')))
+    with open(os.path.join(d, 'runs', runs[0], 'checks.csv'), 'w') as fh:
+        fh.write('t,iter,nCrushed,maxStressRatio\n0.1,10,0,0.5\n0.2,20,2,1.3\n0.3,30,0,0.9\n0.4,40,1,1.1\n')
+    with open(os.path.join(d, 'runs', runs[1], 'checks.csv'), 'w') as fh:
+        fh.write('t,iter,nCrushed,maxStressRatio\n0.1,10,0,0.5\n')
+    data = StudyData(d)
+    s = {r['runId']: r['summary'] for r in data.runs}
+    assert (s[runs[0]]['crushingChecks'], s[runs[0]]['crushesPerCrushingCheck']) == (2, 1.5)
+    assert s[runs[0]]['ratioAtCrushMax'] == 1.3 and s[runs[0]]['ratioAtCrushMean'] == pytest.approx(1.2, rel=1e-12)
+    assert s[runs[1]]['crushingChecks'] == 0 and s[runs[1]]['ratioAtCrushMax'] is None
+    assert 'crushingChecks' not in s[runs[2]]  # no log

@@ -28,9 +28,10 @@ from .table import cellValue
 RESULTS = [('peakForce', 'N'), ('deltaAtPeak', 'm'), ('deltaAtAppliedPeak', 'm'), ('seatingDelta', 'm'), ('deltaMax', 'm'),
            ('deltaFinal', 'm'), ('nCrushed', '-'), ('Bg', '%'), ('Br', '-'), ('BBI', '-'),
            ('nAbraded', '-'), ('volumeLost', 'm^3'), ('massLost', 'kg'), ('massInitial', 'kg'), ('nGrainsInitial', '-'),
-           ('porosity0', '-'), ('wallSeconds', 's'), ('cpuSeconds', 's'), ('steps', '-')]
+           ('porosity0', '-'), ('wallSeconds', 's'), ('cpuSeconds', 's'), ('steps', '-'),
+           ('crushingChecks', '-'), ('crushesPerCrushingCheck', '-'), ('ratioAtCrushMax', '-'), ('ratioAtCrushMean', '-')]
 STATS = ['deltaAtPeak', 'deltaAtAppliedPeak', 'deltaMax', 'peakForce', 'nCrushed', 'nAbraded', 'massLost', 'Bg', 'Br',
-         'BBI', 'wallSeconds']
+         'BBI', 'crushingChecks', 'crushesPerCrushingCheck', 'ratioAtCrushMax', 'wallSeconds', 'cpuSeconds']
 LABELS = {'f': 'loading frequency f [Hz]', 'Tc': 'crushing period $T_c$ [s]', 'rMin': '$r_{min}$ [m]', 'ft0': '$f_{t0}$ [Pa m]',
           'gamma': r'reduction factor $\gamma$ [-]', 'pattern': 'replacement pattern'}
 
@@ -56,6 +57,24 @@ def meanStd(xs):
     """Mean and sample standard deviation (n-1) of xs; NaN where undefined (std of one run)."""
     mean = float(np.mean(xs)) if xs else float('nan')
     return mean, float(np.std(xs, ddof=1)) if len(xs) > 1 else float('nan')
+
+
+def checkStats(runDir):
+    """From the per-check log (checks.csv, or a record's: every check that crushed is in both): the checks
+    that crushed, the grains each crushed on average, and the largest and the mean sigma/f_t those checks
+    saw (how far above their strength rare checks find grains). {} without a log."""
+    path = os.path.join(runDir, 'checks.csv')
+    try:
+        c = np.atleast_1d(np.genfromtxt(path, delimiter=',', names=True))
+    except (OSError, ValueError):
+        return {}
+    if c.dtype.names is None or 'nCrushed' not in c.dtype.names:
+        return {}
+    hit = c[c['nCrushed'] > 0] if c.size else c
+    n = int(hit.size)
+    return {'crushingChecks': n, 'crushesPerCrushingCheck': float(np.mean(hit['nCrushed'])) if n else None,
+            'ratioAtCrushMax': float(np.max(hit['maxStressRatio'])) if n else None,
+            'ratioAtCrushMean': float(np.mean(hit['maxStressRatio'])) if n else None}
 
 
 class StudyData:
@@ -95,6 +114,7 @@ class StudyData:
             params = s.get('params') or {}
             # the values as the run read them; from the cell for a summary without them
             value, seed = (params[k] if k in params else cellValue(k, r['row'].get(k)) for k in (self.param, 'seed'))
+            s = dict(s, **checkStats(d))
             self.runs.append({'line': r['line'], 'runId': r['runId'], 'value': value, 'seed': seed, 'summary': s, 'dir': d})
         if not self.runs:
             raise StudyError('STUDY: no finished run in %s (run it with scripts/study.py run first)' % path)
