@@ -58,3 +58,49 @@ def test_a_reference_that_never_reaches_its_strength_and_a_run_that_crushed(tmp_
     assert res['mean']['majorPrincipal'] == pytest.approx(3.1e6 * 1.2, abs=6e3) and np.isnan(res['std']['majorPrincipal'])
     with pytest.raises(ValueError, match='3 grains crushed; the onset study loads without crushing'):
         onsetStrengths(fabricate(tmp_path / 'b', {(1, 'vonMises'): 0.05}, crushed=3))
+
+
+def test_each_comparison_run_is_named_by_the_one_option_it_changes():
+    from ballast.study.choices import variant
+    paper = {'keep': 'none', 'weibullModulus': 0.0, 'criterion': 'vonMises', 'ft0': 3.1e6}
+    assert variant(paper) == (None, "paper's model")
+    assert variant(dict(paper, keep='mass')) == ('keep', 'keep = mass')
+    assert variant(dict(paper, weibullModulus=3.0)) == ('weibullModulus', 'Weibull k = 3')
+    assert variant(dict(paper, criterion='maxContactForce', ft0=2.13e6)) == ('criterion', 'maxContactForce (ft0 = 2.13e+06 Pa m)')
+    with pytest.raises(ValueError, match='one option of the paper at a time'):
+        variant(dict(paper, keep='volume', weibullModulus=10.0))
+
+
+def test_the_script_writes_the_comparison_and_its_figure(tmp_path):
+    import csv
+    import subprocess
+    import sys
+    root = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+    paper = {'keep': 'none', 'weibullModulus': 0.0, 'criterion': 'vonMises', 'ft0': 3.1e6}
+    variants = [paper, dict(paper, keep='mass'), dict(paper, weibullModulus=3.0), dict(paper, criterion='majorPrincipal', ft0=3.58e6)]
+    rows = []
+    for seed in (1, 2):
+        for k, p in enumerate(variants):
+            rid = 'v%d,seed=%d' % (k, seed)
+            run = tmp_path / 'study' / 'runs' / rid
+            run.mkdir(parents=True)
+            delta = 1e-3 * (10 * k + seed)  # [m] at the peak
+            (run / 'summary.json').write_text(json.dumps({'params': dict(p, seed=seed), 'deltaAtAppliedPeak': delta,
+                                                          'deltaMax': delta, 'nCrushed': k, 'Bg': 0.0, 'massLost': 0.0,
+                                                          'cpuSeconds': 1.0}))
+            (run / 'fd.csv').write_text('t,F,delta,nCrushed,nAbraded,Fapplied\n0,0,0,0,0,0\n0.06,1e6,%r,0,0,1.5e6\n' % delta)
+            rows.append({'runId': rid, 'line': len(rows) + 2, 'row': {}})
+    (tmp_path / 'study' / 'study.json').write_text(json.dumps({'rows': rows, 'columns': []}))
+    script = os.path.join(root, 'scripts', 'choices.py')
+    p = subprocess.run([sys.executable, script, 'compare', str(tmp_path / 'study')], capture_output=True, text=True)
+    assert p.returncode == 0, p.stderr
+    with open(tmp_path / 'study' / 'comparison.csv', newline='') as fh:
+        got = list(csv.DictReader(fh))
+    # the paper's runs first, then the options in the order of OPTIONS, seeds within
+    assert [(r['option'], r['seed']) for r in got] == [('paper', '1'), ('paper', '2'), ('keep', '1'), ('keep', '2'),
+                                                     ('weibullModulus', '1'), ('weibullModulus', '2'), ('criterion', '1'),
+                                                     ('criterion', '2')]
+    assert float(got[3]['deltaAtAppliedPeak_mm']) == pytest.approx(12.0)
+    assert os.path.getsize(tmp_path / 'study' / 'choices.png') > 20000
+    p = subprocess.run([sys.executable, script, 'compare', str(tmp_path)], capture_output=True, text=True)
+    assert p.returncode == 2 and 'holds no study.json' in p.stderr

@@ -79,3 +79,81 @@ def onsetStrengths(study, reference=REFERENCE):
     return {'reference': {'criterion': refName, 'ft0': refFt0}, 'seeds': seeds,
             'mean': {n: float(np.mean([r[n] for r in used])) for n in names},
             'std': {n: float(np.std([r[n] for r in used], ddof=1)) if len(used) > 1 else float('nan') for n in names}}
+
+
+# the options of issue 13, each against the paper's value: (parameter, the paper's value, group title)
+OPTIONS = (('keep', 'none', 'what a replacement keeps'), ('weibullModulus', 0, 'strength scatter (Weibull modulus)'),
+           ('criterion', 'vonMises', 'crushing criterion'))
+
+
+def variant(params):
+    """(the option a run changes or None for the paper's model, its label)."""
+    changed = [(k, params.get(k, paper)) for k, paper, _ in OPTIONS if params.get(k, paper) != paper]
+    if not changed:
+        return None, "paper's model"
+    if len(changed) > 1:
+        raise ValueError('a comparison run changes one option of the paper at a time, not %s' % changed)
+    k, v = changed[0]
+    if k == 'weibullModulus':
+        return k, 'Weibull k = %g' % v
+    if k == 'criterion':
+        return k, '%s (ft0 = %.3g Pa m)' % (v, params['ft0'])
+    return k, 'keep = %s' % v
+
+
+COMPARISON_COLUMNS = ('option', 'variant', 'seed', 'deltaAtAppliedPeak_mm', 'deltaMax_mm', 'nCrushed', 'Bg', 'massLost_kg',
+                      'cpuSeconds')
+
+
+def comparison(study):
+    """One dict per run (COMPARISON_COLUMNS), the paper's runs first, then by option, variant and seed."""
+    rows = []
+    for s, d in runs(study).values():
+        option, name = variant(s['params'])
+        rows.append({'option': option or 'paper', 'variant': name, 'seed': s['params']['seed'],
+                     'deltaAtAppliedPeak_mm': 1e3 * s['deltaAtAppliedPeak'], 'deltaMax_mm': 1e3 * s['deltaMax'],
+                     'nCrushed': s['nCrushed'], 'Bg': s.get('Bg'), 'massLost_kg': s.get('massLost'),
+                     'cpuSeconds': s.get('cpuSeconds'), 'dir': d})
+    order = ['paper'] + [k for k, _, _ in OPTIONS]
+    return sorted(rows, key=lambda r: (order.index(r['option']), r['variant'], r['seed']))
+
+
+def figure(study, out):
+    """choices.png: per option a row of two panels: the F-delta curves (applied force) of the paper's
+    runs and of the option's variants, a colour per variant and a line style per seed; and delta at
+    the peak of the applied force per variant, a point per seed and the mean as a bar."""
+    import matplotlib
+    matplotlib.use('Agg')
+    import matplotlib.pyplot as plt
+    rows = comparison(study)
+    seeds = sorted(set(r['seed'] for r in rows))
+    styles = dict(zip(seeds, ['-', '--', ':', '-.'] * 5))
+    fig, axes = plt.subplots(len(OPTIONS), 2, figsize=(11, 3.6 * len(OPTIONS)), gridspec_kw={'width_ratios': [1.6, 1]})
+    for (key, _, title), (a1, a2) in zip(OPTIONS, axes):
+        mine = [r for r in rows if r['option'] in ('paper', key)]
+        names = list(dict.fromkeys(r['variant'] for r in mine))
+        for r in mine:
+            fd = readColumns(os.path.join(r['dir'], 'fd.csv'))
+            a1.plot(1e3 * fd['delta'], 1e-3 * fd['Fapplied'], color='C%d' % names.index(r['variant']), ls=styles[r['seed']], lw=1)
+        for i, n in enumerate(names):
+            d = [r['deltaAtAppliedPeak_mm'] for r in mine if r['variant'] == n]
+            a2.bar(i, np.mean(d), color='C%d' % i, alpha=0.35)
+            a2.plot([i] * len(d), d, 'o', color='C%d' % i)
+            a1.plot([], [], color='C%d' % i, label=n)
+        for s in seeds:
+            a1.plot([], [], color='k', ls=styles[s], label='seed %d' % s)
+        a1.set_title(title, fontsize=10)
+        a1.set_xlabel(r'plate displacement $\delta$ [mm]')
+        a1.set_ylabel('applied force F [kN]')
+        a1.legend(fontsize=7, loc='lower right')
+        a2.set_xticks(range(len(names)))
+        a2.set_xticklabels(names, rotation=15, fontsize=7)
+        a2.set_ylabel(r'$\delta$ at the peak of F [mm]')
+        for a in (a1, a2):
+            a.grid(alpha=0.3)
+    fig.suptitle('issue 13 options at the paper\'s size (300 x 150 mm, 1500 kN, 8 Hz): %d runs, seeds %s' % (
+        len(rows), ', '.join(map(str, seeds))), fontsize=10)
+    fig.tight_layout()
+    fig.savefig(out, dpi=110)
+    plt.close(fig)
+    return out
