@@ -1,0 +1,116 @@
+"""Why the displacement depends on the crushing period (issue 14, item 3; docs/studies.md): the T_c
+study (the baseline, the paper's model) beside controlled variants that each remove one candidate
+mechanism, compared per T_c. Reads study directories or their records; NumPy, no YADE.
+
+A run's variant is read from its parameters: 'sequential' (maxPerCheck > 0: no batches of crushes at
+rare checks), 'damped' (more local damping than the baseline: a shorter transient after each
+replacement), 'servo' (loadMode servo: the plate cannot fall into the gap a crush leaves), or the
+baseline ('batch': the paper's). A mechanism is explained when removing it removes the trend of the
+mean displacement with T_c and the other variants keep it.
+"""
+import numpy as np
+
+from .aggregate import StudyData, checkStats
+
+BASELINE = 'batch (the paper)'
+DEFAULT_DAMPING = 0.2  # the oedometer's default local damping [-]
+
+
+def variantOf(params):
+    """The name of the variant a run's parameters make (see the module's doc)."""
+    names = []
+    if params.get('maxPerCheck', 0) > 0:
+        names.append('sequential' if params['maxPerCheck'] == 1 else 'at most %d per check' % params['maxPerCheck'])
+    if params.get('damping', DEFAULT_DAMPING) != DEFAULT_DAMPING:
+        names.append('damped (%g)' % params['damping'])
+    if params.get('loadMode', 'plate') == 'servo':
+        names.append('servo')
+    return ' + '.join(names) or BASELINE
+
+
+def collect(*studies):
+    """One dict per finished run of the study folders: variant, Tc, seed, delta at the peak of the
+    applied force [m], crushed grains, crushing checks and the largest sigma/f_t at them."""
+    out = []
+    for path in studies:
+        data = StudyData(path, param='Tc')
+        for r in data.runs:
+            s = r['summary']
+            row = {'variant': variantOf(s['params']), 'Tc': float(s['params']['Tc']), 'seed': r['seed'],
+                   'delta': s[data.peak], 'nCrushed': s['nCrushed']}
+            row.update(checkStats(r['dir']))
+            out.append(row)
+    return out
+
+
+def table(rows):
+    """Per (variant, Tc): n, mean and sample standard deviation of delta, its standard error, and the
+    mean crushes; sorted by variant (the baseline first) and Tc."""
+    keys = sorted(set((r['variant'], r['Tc']) for r in rows), key=lambda k: (k[0] != BASELINE, k[0], k[1]))
+    res = []
+    for v, tc in keys:
+        d = np.array([r['delta'] for r in rows if (r['variant'], r['Tc']) == (v, tc)])
+        n = len(d)
+        std = float(np.std(d, ddof=1)) if n > 1 else float('nan')
+        res.append({'variant': v, 'Tc': tc, 'n': n, 'delta_mean': float(np.mean(d)), 'delta_std': std,
+                    'delta_sem': std / np.sqrt(n) if n > 1 else float('nan'),
+                    'nCrushed_mean': float(np.mean([r['nCrushed'] for r in rows if (r['variant'], r['Tc']) == (v, tc)]))})
+    return res
+
+
+def trends(rows, pairedSeeds=True):
+    """Per variant, the change of mean delta from each T_c to the next larger one it has, with its
+    standard error, on the seeds the variant and the baseline share at both (pairedSeeds) so that
+    the variants are compared on the same realizations: [{variant, Tc0, Tc1, change, sem, n}]."""
+    out = []
+    for v in sorted(set(r['variant'] for r in rows), key=lambda x: (x != BASELINE, x)):
+        mine = [r for r in rows if r['variant'] == v]
+        tcs = sorted(set(r['Tc'] for r in mine))
+        for a, b in zip(tcs, tcs[1:]):
+            at = {r['seed']: r['delta'] for r in mine if r['Tc'] == a}
+            bt = {r['seed']: r['delta'] for r in mine if r['Tc'] == b}
+            seeds = sorted(set(at) & set(bt))
+            if pairedSeeds:
+                base = [r for r in rows if r['variant'] == BASELINE]
+                for t in (a, b):
+                    seeds = [s for s in seeds if any(r['seed'] == s and r['Tc'] == t for r in base)]
+            diff = np.array([bt[s] - at[s] for s in seeds])
+            n = len(diff)
+            out.append({'variant': v, 'Tc0': a, 'Tc1': b, 'n': n, 'change': float(np.mean(diff)) if n else float('nan'),
+                        'sem': float(np.std(diff, ddof=1) / np.sqrt(n)) if n > 1 else float('nan')})
+    return out
+
+
+def figure(rows, out):
+    """delta at the peak of the applied force (mean +- standard deviation) and the mean crushes
+    against T_c, a line per variant; T_c = 0 (every step) one step left of the smallest."""
+    import matplotlib
+    matplotlib.use('Agg')
+    import matplotlib.pyplot as plt
+    st = table(rows)
+    tcs = sorted(set(r['Tc'] for r in st))
+    pos = [t for t in tcs if t > 0]
+    ratio = (max(pos) / min(pos)) ** (1 / max(len(pos) - 1, 1)) if len(pos) > 1 else 10.0
+    x = {t: (t if t > 0 else min(pos) / ratio) for t in tcs}
+    fig, (a1, a2) = plt.subplots(1, 2, figsize=(11, 4.3))
+    variants = list(dict.fromkeys(r['variant'] for r in st))
+    for i, v in enumerate(variants):
+        mine = [r for r in st if r['variant'] == v]
+        xs = [x[r['Tc']] * (1 + 0.04 * (i - (len(variants) - 1) / 2)) for r in mine]  # side by side
+        a1.errorbar(xs, [1e3 * r['delta_mean'] for r in mine], yerr=[1e3 * np.nan_to_num(r['delta_std']) for r in mine],
+                    fmt='-o', capsize=3, color='C%d' % i, label='%s (n = %s)' % (v, '/'.join(str(r['n']) for r in mine)))
+        a2.plot(xs, [r['nCrushed_mean'] for r in mine], '-o', color='C%d' % i, label=v)
+    for a, ylabel in ((a1, r'$\delta$ at the peak of the applied force [mm]'), (a2, 'grains crushed, mean [-]')):
+        a.set_xscale('log')
+        a.set_xticks([x[t] for t in tcs])
+        a.set_xticklabels(['every step' if t == 0 else '%.3g' % t for t in tcs], rotation=30, fontsize=8)
+        a.minorticks_off()
+        a.set_xlabel('crushing period $T_c$ [s]')
+        a.set_ylabel(ylabel)
+        a.grid(alpha=0.3)
+        a.legend(fontsize=7)
+    fig.suptitle('what makes delta depend on $T_c$: the paper\'s model and variants that remove one mechanism each', fontsize=10)
+    fig.tight_layout()
+    fig.savefig(out, dpi=110)
+    plt.close(fig)
+    return out

@@ -1,0 +1,49 @@
+#!/usr/bin/python3
+"""Why delta depends on the crushing period: the T_c study beside its controlled variants
+(ballast.study.mechanisms; issue 14, docs/studies.md).
+
+    scripts/tc_mechanisms.py docs/studies/Tc-4Hz docs/studies/Tc-variants --out docs/studies/Tc-variants
+writes mechanisms.csv (per variant and T_c: n, mean, std, standard error of delta, mean crushes),
+trends.csv (per variant, the change of mean delta from one T_c to the next on shared seeds) and
+mechanisms.png.
+"""
+import argparse
+import csv
+import os
+import sys
+
+from ballast.study import StudyError, mechanisms
+
+
+def writeCsv(rows, path):
+    with open(path, 'w', newline='') as fh:
+        w = csv.DictWriter(fh, fieldnames=list(rows[0]))
+        w.writeheader()
+        w.writerows(rows)
+    return path
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(prog='scripts/tc_mechanisms.py', description=__doc__, allow_abbrev=False,
+                                 formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument('studies', nargs='+', metavar='STUDY', help='study directories or records (the baseline and the variants)')
+    ap.add_argument('--out', metavar='DIR', required=True, help='where to write')
+    a = ap.parse_args(argv)
+    try:
+        rows = mechanisms.collect(*a.studies)
+    except StudyError as e:
+        print('tc_mechanisms.py: %s' % e, file=sys.stderr)
+        return 2
+    os.makedirs(a.out, exist_ok=True)
+    table = mechanisms.table(rows)
+    for r in table:
+        print('%-28s Tc %-9g n %3d  delta %6.1f +- %5.1f mm  crushed %6.1f' % (
+            r['variant'], r['Tc'], r['n'], 1e3 * r['delta_mean'], 1e3 * r['delta_std'], r['nCrushed_mean']))
+    print(writeCsv(table, os.path.join(a.out, 'mechanisms.csv')))
+    print(writeCsv(mechanisms.trends(rows), os.path.join(a.out, 'trends.csv')))
+    print(mechanisms.figure(rows, os.path.join(a.out, 'mechanisms.png')))
+    return 0
+
+
+if __name__ == '__main__':
+    sys.exit(main())
