@@ -59,7 +59,7 @@ def elastic(ids):
     return e
 
 
-def snapshot(ids):
-    """[kinetic, elastic] [J] of the bodies `ids` and of those in contact with them."""
-    group = list(ids) + partners(ids)
+def snapshot(ids, also=()):
+    """[kinetic, elastic] [J] of the bodies `ids`, of those in contact with them and of the bodies `also`."""
+    group = sorted(set(ids) | set(also) | set(partners(ids)))
     return [kinetic(group), elastic(group)]

@@ -38,6 +38,7 @@ _PERIODIC_STATE = ('iterLast', 'virtLast', 'realLast', 'nDone')
 _TAG = 'ballast.'
 _COMMAND = "import ballast.engines as _be; _be._fire(%r)"
 
+_ENERGY_AFTER_STEPS = 10  # energyAfter: the first check at least this many steps after a replacement ("a few steps")
 _BROKEN = 'bound broken'  # start of prefilterNote once a full read broke the prefilter's bound
 _live = {}      # key -> engine instance created in this process
 _classes = {}   # class name -> class, for restoring
@@ -187,9 +188,10 @@ class BallastCrushEngine(_BallastEngine):
         'volumeLost': (0.0, 'grain volume lost by crushing [m^3]'),
         'massLost': (0.0, 'grain mass lost by crushing [kg]'),
         'events': ([], 'one dict per crushed grain: kind, t [s], iter, id, pos [m], radius [m], value (sigma_e [Pa]), '
-                       'strength (f_t [Pa]; f_t (1 - D) with fatigue), newIds; energyBefore, energyAfter (the next '
-                       'check) and with keep=volume energyGrown: [kinetic, elastic] [J] of the grain or its fragments '
-                       'and their neighbours (ballast.energy)'),
+                       'strength (f_t [Pa]; f_t (1 - D) with fatigue), newIds; energyBefore, energyAfter (the first '
+                       'check at least 10 steps after) and with keep=volume energyGrown: [kinetic, elastic] [J] of '
+                       'the grain or its fragments, its neighbours before the crush and those of the fragments '
+                       '(ballast.energy)'),
         'nChecks': (0, 'checks run so far'),
         'checkSeconds': (0.0, 'wall time spent in checks, before the state is written to O.tags [s]'),
         'maxStressRatio': (0.0, 'largest sigma_e / f_t over the grains at the last check [-]'),
@@ -284,18 +286,19 @@ class BallastCrushEngine(_BallastEngine):
 
     # ---------------------------------------------------------------- after a replacement (issue 13)
     def _recordEnergies(self):
-        """Energy of the fragments and their neighbours at the first check after a replacement (energyAfter)
-        and after its growth ended (energyGrown): the contact forces of the new geometry are those of the
-        step after the change."""
+        """Energy of the fragments, the parent's neighbours and the fragments' own neighbours a few steps after
+        a replacement (energyAfter) and after its growth ended (energyGrown). The parent's neighbours are
+        kept because the fragments, inside the parent, often touch none of them at first: the energy of
+        the same bodies before and after is what the replacement destroys or injects."""
         d = self.__dict__
         pending = d.get('_pending')
         if not pending:
             return False
-        for k, key in pending:
-            e = d['_events'][k]
-            e[key] = energy.snapshot(e['newIds'])
-        d['_pending'] = []
-        return True
+        due = [p for p in pending if O.iter >= p['due']]
+        for p in due:
+            d['_events'][p['event']][p['key']] = energy.snapshot(p['ids'], p['neighbours'])
+        d['_pending'] = [p for p in pending if O.iter < p['due']]
+        return bool(due)
 
     def _grow(self, tab):
         """keep='volume': every growing replacement's fragments towards the parent's volume, by the share of
@@ -324,7 +327,8 @@ class BallastCrushEngine(_BallastEngine):
             if frac < 1:
                 still.append(g)
             else:
-                d.setdefault('_pending', []).append((g['event'], 'energyGrown'))
+                d.setdefault('_pending', []).append({'event': g['event'], 'key': 'energyGrown', 'due': O.iter,
+                                                     'ids': g['ids'], 'neighbours': g.get('neighbours', [])})
         d['_growing'] = still
         tab.commit()
         return True
@@ -334,6 +338,7 @@ class BallastCrushEngine(_BallastEngine):
         b = O.bodies[bid]
         st, mat, color, mask = b.state, b.material, b.shape.color, b.groupMask
         pos, vel, angVel, mass = Vector3(st.pos), Vector3(st.vel), Vector3(st.angVel), st.mass
+        neighbours = energy.partners([bid])
         before = energy.snapshot([bid])  # kinetic and elastic energy of the grain and its neighbours
         frags = _ballast.placeFragments(self.pattern, (pos[0], pos[1], pos[2]), r, self.seed, self._counter)
         self.__dict__['_counter'] += 1
@@ -359,9 +364,11 @@ class BallastCrushEngine(_BallastEngine):
         self._event('crush', bid, pos, r, se, ft, newIds)
         k = len(d['_events']) - 1
         d['_events'][k]['energyBefore'] = before
-        d.setdefault('_pending', []).append((k, 'energyAfter'))
+        d.setdefault('_pending', []).append({'event': k, 'key': 'energyAfter', 'ids': newIds, 'neighbours': neighbours,
+                                             'due': O.iter + _ENERGY_AFTER_STEPS})
         if self.keep == 'volume':
-            d.setdefault('_growing', []).append({'ids': newIds, 't0': O.time, 'event': k, 'grown': 1.0,
+            d.setdefault('_growing', []).append({'ids': newIds, 'neighbours': neighbours, 't0': O.time, 'event': k,
+                                                 'grown': 1.0,
                                                  'ratio': r ** 3 / float(np.sum(frags[:, 3] ** 3))})
         return newIds
 
@@ -520,7 +527,10 @@ def _restoreKey(key):
     s['outputs']['_events'] = s['outputs'].pop('events')
     new.__dict__.update(s['outputs'])
     internal = json.loads(O.tags[tag + '.internal']) if (tag + '.internal') in keys else {}
-    new.__dict__['_growing'], new.__dict__['_pending'] = internal.get('growing', []), internal.get('pending', [])
+    new.__dict__['_growing'] = internal.get('growing', [])
+    new.__dict__['_pending'] = [p if isinstance(p, dict) else  # states saved before the neighbours were kept
+                                {'event': p[0], 'key': p[1], 'ids': s['outputs']['_events'][p[0]]['newIds'],
+                                 'neighbours': [], 'due': 0} for p in internal.get('pending', [])]
     new.__dict__['_counter'] = s['counter']
     if (tag + '.fatigue') in keys:
         new.__dict__['_fatigue'] = np.frombuffer(base64.b64decode(O.tags[tag + '.fatigue']), dtype=float).reshape(-1, 4).copy()
