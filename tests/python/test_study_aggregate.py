@@ -167,17 +167,28 @@ def test_runs_csv_carries_every_parameter_of_every_run(tmp_path):
 
 
 def test_crushing_checks_from_the_per_check_log(tmp_path):
-    # a run whose checks crushed 2 grains at sigma/f_t = 1.3 and 1 at 1.1 (and saw 0.9 and 0.5 without crushing):
-    # 2 crushing checks, 1.5 grains each, largest ratio 1.3, mean 1.2; a run whose log has no crush: 0 checks
+    # a run whose checks crushed 2 grains and 1 (and saw ratios up to 2.5 that include fragments below r_min):
+    # 2 crushing checks, 1.5 grains each; its crushes (events.csv in a run, crushes.csv in a record) at
+    # sigma/f_t = 1.3, 1.2 and 1.1: largest 1.3, mean 1.2; a run whose log has no crush: 0 checks
     d = fabricate(tmp_path / 's')
     runs = sorted(os.listdir(os.path.join(d, 'runs')))
     with open(os.path.join(d, 'runs', runs[0], 'checks.csv'), 'w') as fh:
-        fh.write('t,iter,nCrushed,maxStressRatio\n0.1,10,0,0.5\n0.2,20,2,1.3\n0.3,30,0,0.9\n0.4,40,1,1.1\n')
+        fh.write('t,iter,nCrushed,maxStressRatio\n0.1,10,0,0.5\n0.2,20,2,2.5\n0.3,30,0,0.9\n0.4,40,1,1.1\n')
+    with open(os.path.join(d, 'runs', runs[0], 'events.csv'), 'w') as fh:
+        fh.write('kind,t,iter,id,x,y,z,radius,value,strength,newIds\ncrush,0.2,20,5,0,0,0,0.02,2.6e8,2e8,9\n'
+                 'crush,0.2,20,6,0,0,0,0.01,4.8e8,4e8,10\nabrasion,0.3,30,7,0,0,0,0.01,9e11,3e11,\n'
+                 'crush,0.4,40,8,0,0,0,0.01,4.4e8,4e8,11\n')
     with open(os.path.join(d, 'runs', runs[1], 'checks.csv'), 'w') as fh:
         fh.write('t,iter,nCrushed,maxStressRatio\n0.1,10,0,0.5\n')
+    with open(os.path.join(d, 'runs', runs[2], 'checks.csv'), 'w') as fh:
+        fh.write('t,iter,nCrushed,maxStressRatio\n0.1,10,1,3\n')
+    with open(os.path.join(d, 'runs', runs[2], 'crushes.csv'), 'w') as fh:
+        fh.write('t,radius,ratio\n0.1,0.02,1.05\n')
     data = StudyData(d)
     s = {r['runId']: r['summary'] for r in data.runs}
     assert (s[runs[0]]['crushingChecks'], s[runs[0]]['crushesPerCrushingCheck']) == (2, 1.5)
-    assert s[runs[0]]['ratioAtCrushMax'] == 1.3 and s[runs[0]]['ratioAtCrushMean'] == pytest.approx(1.2, rel=1e-12)
+    assert s[runs[0]]['ratioAtCrushMax'] == pytest.approx(1.3, rel=1e-12)
+    assert s[runs[0]]['ratioAtCrushMean'] == pytest.approx(1.2, rel=1e-12)
     assert s[runs[1]]['crushingChecks'] == 0 and s[runs[1]]['ratioAtCrushMax'] is None
-    assert 'crushingChecks' not in s[runs[2]]  # no log
+    assert s[runs[2]]['ratioAtCrushMax'] == s[runs[2]]['ratioAtCrushMean'] == 1.05
+    assert 'crushingChecks' not in s[runs[3]]  # no log

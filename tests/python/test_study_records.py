@@ -67,6 +67,10 @@ def writeRun(d, n=20000):
             json.dump(data, fh)
     with open(os.path.join(d, 'psd.csv'), 'w') as fh:
         fh.write('size,before,after\n0.0315,0,1\n')
+    with open(os.path.join(d, 'events.csv'), 'w') as fh:  # the 3 crushes (value / strength 1.3, 1.25, 1.1) and an abrasion
+        fh.write('kind,t,iter,id,x,y,z,radius,value,strength,newIds\n'
+                 'crush,0.3,30000,5,0,0,0,0.02,2.6e8,2e8,9 10\ncrush,0.3,30000,6,0,0,0,0.01,5e8,4e8,11 12\n'
+                 'abrasion,0.5,50000,7,0,0,0,0.01,3e11,2e11,\ncrush,0.7,70000,8,0,0,0,0.0125,3.52e8,3.2e8,13 14\n')
     return c
 
 
@@ -99,6 +103,11 @@ def test_a_record_is_small_and_keeps_what_the_figures_and_tables_need(tmp_path):
     assert info['fdRows'] == {'run': 20000, 'record': len(rows)}
     assert info['checks'] == {'run': 1000, 'record': len(checks), 'crushing': 2, 'maxStressRatio': pytest.approx(1.4)}
     assert len(thinChecks({'nCrushed': np.ones(1000), 'maxStressRatio': np.ones(1000)})) == 400  # crushes at every check
+    # the crushes with the ratio each crushed at, from events.csv (the abrasion left out)
+    with open(os.path.join(dest, 'crushes.csv'), newline='') as fh:
+        crushes = list(csv.DictReader(fh))
+    assert [(float(r['t']), float(r['radius'])) for r in crushes] == [(0.3, 0.02), (0.3, 0.01), (0.7, 0.0125)]
+    assert [float(r['ratio']) for r in crushes] == pytest.approx([1.3, 1.25, 1.1], rel=1e-9)
     # an unfinished run has no record
     os.makedirs(str(tmp_path / 'cut'))
     with pytest.raises(ValueError, match='not a finished run: no summary.json'):

@@ -22,6 +22,7 @@ import numpy as np
 from ..oedometer.parameters import PARAMS
 from .files import readSummary
 from .options import StudyError
+from .records import crushTable
 from .table import cellValue
 
 # Results of summary.json carried into the tables; (key, unit)
@@ -61,20 +62,25 @@ def meanStd(xs):
 
 def checkStats(runDir):
     """From the per-check log (checks.csv, or a record's: every check that crushed is in both): the checks
-    that crushed, the grains each crushed on average, and the largest and the mean sigma/f_t those checks
-    saw (how far above their strength rare checks find grains). {} without a log."""
-    path = os.path.join(runDir, 'checks.csv')
+    that crushed and the grains each crushed on average; from the crushes (events.csv, or a record's
+    crushes.csv) the largest and the mean sigma/f_t of the grains when they crushed (how far above their
+    strength rare checks find grains; the log's maxStressRatio also counts fragments below r_min, which
+    never crush). {} without a log."""
     try:
-        c = np.atleast_1d(np.genfromtxt(path, delimiter=',', names=True))
+        c = np.atleast_1d(np.genfromtxt(os.path.join(runDir, 'checks.csv'), delimiter=',', names=True))
     except (OSError, ValueError):
         return {}
     if c.dtype.names is None or 'nCrushed' not in c.dtype.names:
         return {}
     hit = c[c['nCrushed'] > 0] if c.size else c
     n = int(hit.size)
-    return {'crushingChecks': n, 'crushesPerCrushingCheck': float(np.mean(hit['nCrushed'])) if n else None,
-            'ratioAtCrushMax': float(np.max(hit['maxStressRatio'])) if n else None,
-            'ratioAtCrushMean': float(np.mean(hit['maxStressRatio'])) if n else None}
+    out = {'crushingChecks': n, 'crushesPerCrushingCheck': float(np.mean(hit['nCrushed'])) if n else None,
+           'ratioAtCrushMax': None, 'ratioAtCrushMean': None}
+    crushes = crushTable(runDir)
+    ratios = crushes[2] if crushes is not None else np.array([])
+    if ratios.size:
+        out.update(ratioAtCrushMax=float(np.max(ratios)), ratioAtCrushMean=float(np.mean(ratios)))
+    return out
 
 
 class StudyData:
@@ -191,7 +197,8 @@ def axisPositions(data, xlog):
 
 
 def plots(data, outDir, xlog='auto'):
-    """fd_curves.png (Fig. 4) and delta_peak.png (Fig. 5) in outDir; returns their paths."""
+    """fd_curves.png (Fig. 4), delta_peak.png (Fig. 5) and, when the runs have a per-check log, checks.png in
+    outDir; returns their paths."""
     import matplotlib
     matplotlib.use('Agg')
     import matplotlib.pyplot as plt
@@ -202,7 +209,10 @@ def plots(data, outDir, xlog='auto'):
     nv = len(data.values)
     ncol = min(nv, 3)
     nrow = -(-nv // ncol)
-    fig, axes = plt.subplots(nrow, ncol, figsize=(4.2 * ncol, 3.3 * nrow + 0.6), sharex=True, sharey=True, squeeze=False)
+    legendRows = -(-len(data.seeds) // 10) if len(data.seeds) <= 20 else 0
+    top = 0.35 + 0.22 * legendRows  # [in] above the panels: the title, then the legend's rows
+    height = 3.3 * nrow + 0.3 + top
+    fig, axes = plt.subplots(nrow, ncol, figsize=(4.2 * ncol, height), sharex=True, sharey=True, squeeze=False)
     seedColor = {s: plt.get_cmap('tab10' if len(data.seeds) <= 10 else 'tab20')(i % 20) for i, s in enumerate(data.seeds)}
     for k, v in enumerate(data.values):
         ax = axes[k // ncol][k % ncol]
@@ -223,11 +233,13 @@ def plots(data, outDir, xlog='auto'):
             ax.tick_params(labelbottom=True)
     for k in range(nv, nrow * ncol):
         axes[k // ncol][k % ncol].set_visible(False)
-    if len(data.seeds) <= 20:
+    fig.suptitle('%s: %d runs, %d realizations' % (name, len(data.runs), len(data.seeds)), fontsize=10,
+                 y=1 - 0.05 / height, va='top')
+    if legendRows:
         fig.legend(handles=[Line2D([], [], color=seedColor[s], lw=1.5, label='seed %s' % s) for s in data.seeds],
-                   loc='upper center', ncol=min(len(data.seeds), 10), fontsize=7, frameon=False)
-    fig.suptitle('%s: %d runs, %d realizations' % (name, len(data.runs), len(data.seeds)), fontsize=10, y=0.995)
-    fig.tight_layout(rect=(0, 0, 1, 0.93 if len(data.seeds) <= 10 else 0.9))
+                   loc='upper center', bbox_to_anchor=(0.5, 1 - 0.33 / height), ncol=min(len(data.seeds), 10),
+                   fontsize=7, frameon=False)
+    fig.tight_layout(rect=(0, 0, 1, 1 - top / height))
     fd = os.path.join(outDir, 'fd_curves.png')
     fig.savefig(fd, dpi=110)
     plt.close(fig)
@@ -252,7 +264,51 @@ def plots(data, outDir, xlog='auto'):
     dp = save(fig, ax, LABELS.get(data.param, data.param), r'displacement at peak %sforce $\delta$ [mm]' % (
               'applied ' if data.peak == 'deltaAtAppliedPeak' else ''),
               '%s: %d runs, %d realizations' % (name, len(data.runs), len(data.seeds)), os.path.join(outDir, 'delta_peak.png'))
-    return fd, dp
+    ck = checksPlot(data, outDir, x, ticks, scale)
+    return [fd, dp] + ([ck] if ck else [])
+
+
+def checksPlot(data, outDir, x, ticks, scale):
+    """checks.png: from the per-check logs, per value of the parameter, the grains crushed per run and the
+    largest sigma/f_t of a grain when it crushed (how far above their strength rare checks find grains);
+    a point per run, the mean as a bar. None if no run has a log."""
+    import matplotlib.pyplot as plt
+    runs = [r for r in data.runs if r['summary'].get('crushingChecks') is not None]
+    if not runs:
+        return None
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.3))
+    xs0 = sorted(x.values())
+    # the runs of a value spread over +-0.15 of the spacing of the values (a factor on a log axis)
+    step = (xs0[-1] / xs0[0]) ** (1 / max(len(xs0) - 1, 1)) if scale == 'log' else \
+        (min(np.diff(xs0)) if len(xs0) > 1 else 1.0)
+    for ax, key, ylabel in ((axes[0], 'nCrushed', 'grains crushed in the run'),
+                            (axes[1], 'ratioAtCrushMax', r'largest $\sigma/f_t$ of a grain when it crushed')):
+        for v in data.values:
+            ys = np.array([r['summary'][key] for r in runs if r['value'] == v and r['summary'].get(key) is not None], float)
+            if not ys.size:
+                continue
+            jitter = np.linspace(-0.15, 0.15, ys.size) if ys.size > 1 else np.zeros(1)
+            xs = x[v] * step ** jitter if scale == 'log' else x[v] + jitter * step
+            ax.plot(xs, ys, 'o', ms=3.5, color='0.45', alpha=0.8, zorder=2)
+            ax.plot(x[v], ys.mean(), '_', ms=22, mew=2.5, color='C3', zorder=3)
+        ax.plot([], [], 'o', ms=3.5, color='0.45', label='one run')
+        ax.plot([], [], '_', ms=14, mew=2.5, color='C3', label='mean')
+        ax.set_xscale(scale)
+        if ticks is not None:
+            ax.set_xticks([x[v] for v in data.values])
+            ax.set_xticklabels(ticks, rotation=45 if scale == 'log' else 0, ha='right' if scale == 'log' else 'center', fontsize=8)
+            ax.minorticks_off()
+        ax.set_xlabel(LABELS.get(data.param, data.param))
+        ax.set_ylabel(ylabel)
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=8)
+    axes[1].axhline(1.0, color='k', lw=0.8, ls=':')
+    fig.suptitle('%s: the per-check log of %d runs' % (os.path.basename(data.dir), len(runs)), fontsize=10)
+    fig.tight_layout()
+    path = os.path.join(outDir, 'checks.png')
+    fig.savefig(path, dpi=130)
+    plt.close(fig)
+    return path
 
 
 def effectTest(data, alpha=0.05, power=0.8):
@@ -325,5 +381,5 @@ def aggregate(path, param=None, outDir=None, xlog='auto', figures=True):
                   test['power'], test['alpha']))
     print('tables: %s, %s' % (runsCsv, statsCsv))
     if figures:
-        print('figures: %s, %s' % plots(data, outDir, xlog))
+        print('figures: %s' % ', '.join(plots(data, outDir, xlog)))
     return data

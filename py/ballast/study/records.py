@@ -12,6 +12,8 @@ the full one:
         fd.csv              fd.csv thinned to at most MAX_FD_ROWS rows (:func:`thinCurve`), same columns
         checks.csv          the per-check log thinned (:func:`thinChecks`): every check where a grain
                             crushed, and the largest stress ratio to 1/200 of its range
+        crushes.csv         per crush (events.csv): t [s], the grain's radius [m] and its ratio, the
+                            criterion's stress over the strength it crushed at [-]
         record.json         what was left out: rows of fd.csv and checks.csv, the largest stress ratio
                             of all checks
         psd.csv, cycles.csv copied if the run wrote them
@@ -109,6 +111,24 @@ def csvText(header, rows):
     return buf.getvalue()
 
 
+def crushTable(runDir):
+    """(t [s], radius [m], ratio [-]) arrays, one entry per crush of a run folder (events.csv) or a record
+    (crushes.csv); ratio = the criterion's stress / the strength when the check crushed the grain. None
+    without either file."""
+    for name in ('crushes.csv', 'events.csv'):
+        path = os.path.join(runDir, name)
+        if os.path.isfile(path):
+            header, rows = readCsv(path)
+            k = {h: i for i, h in enumerate(header)}
+            if name == 'events.csv':
+                rows = [r for r in rows if r[k['kind']] == 'crush']
+            t, radius = (np.array([float(r[k[c]]) for r in rows]) for c in ('t', 'radius'))
+            ratio = np.array([float(r[k['ratio']]) if 'ratio' in k else float(r[k['value']]) / float(r[k['strength']])
+                              for r in rows])
+            return t, radius, ratio
+    return None
+
+
 def keepRecord(runDir, records, runId):
     """Writes the record of the finished run in runDir to records/runs/<runId> (replacing an older one
     whole: it appears only once complete). Returns the record's folder."""
@@ -138,6 +158,10 @@ def keepRecord(runDir, records, runId):
         writeAtomic(os.path.join(tmp, 'checks.csv'), csvText(header, [rows[i] for i in kept]))
         info['checks'] = {'run': len(rows), 'record': int(len(kept)), 'crushing': int(np.sum(cols['nCrushed'] > 0)) if rows else 0,
                           'maxStressRatio': float(np.max(cols['maxStressRatio'])) if rows else None}
+    crushes = crushTable(runDir)
+    if crushes is not None:
+        writeAtomic(os.path.join(tmp, 'crushes.csv'), csvText(['t', 'radius', 'ratio'], [
+            ['%.10g' % x for x in row] for row in zip(*crushes)]))
     writeAtomic(os.path.join(tmp, 'record.json'), json.dumps(info, indent=1))
     if os.path.isdir(dest):
         shutil.rmtree(dest)
