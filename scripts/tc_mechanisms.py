@@ -3,7 +3,8 @@
 (ballast.study.mechanisms; issue 14, docs/studies.md).
 
     scripts/tc_mechanisms.py docs/studies/Tc-4Hz docs/studies/Tc-variants --out docs/studies/Tc-variants
-writes mechanisms.csv (per variant and T_c: n, mean, std, standard error of delta, mean crushes),
+writes mechanisms.csv (per variant and T_c: n, mean, std, standard error of delta, mean crushes, the share of
+crushes after the peak of the applied force, the largest sigma/f_t of a grain when it crushed),
 trends.csv (per variant, the change of mean delta from one T_c to the next on shared seeds) and
 mechanisms.png.
 """
@@ -37,8 +38,9 @@ def main(argv=None):
     os.makedirs(a.out, exist_ok=True)
     table = mechanisms.table(rows)
     for r in table:
-        print('%-28s Tc %-9g n %3d  delta %6.1f +- %5.1f mm  crushed %6.1f' % (
-            r['variant'], r['Tc'], r['n'], 1e3 * r['delta_mean'], 1e3 * r['delta_std'], r['nCrushed_mean']))
+        print('%-28s Tc %-9g n %3d  delta %6.1f +- %5.1f mm  crushed %6.1f  after the peak %4.0f %%  largest ratio %4.2f' % (
+            r['variant'], r['Tc'], r['n'], 1e3 * r['delta_mean'], 1e3 * r['delta_std'], r['nCrushed_mean'],
+            100 * r['afterPeak_mean'], r['ratioAtCrushMax_mean']))
     print(writeCsv(table, os.path.join(a.out, 'mechanisms.csv')))
     print(writeCsv(mechanisms.trends(rows), os.path.join(a.out, 'trends.csv')))
     print(mechanisms.figure(rows, os.path.join(a.out, 'mechanisms.png')))

@@ -6,6 +6,7 @@ import os
 import subprocess
 import sys
 
+import numpy as np
 import pytest
 
 from ballast.study.mechanisms import BASELINE, collect, table, trends, variantOf
@@ -21,7 +22,7 @@ def fabricate(d, runs):
         run = os.path.join(d, 'runs', rid)
         os.makedirs(run)
         with open(os.path.join(run, 'summary.json'), 'w') as fh:
-            json.dump({'params': dict({'seed': seed, 'Tc': tc, 'damping': 0.2, 'loadMode': 'plate', 'maxPerCheck': 0}, **extra),
+            json.dump({'params': dict({'seed': seed, 'Tc': tc, 'f': 4.0, 'damping': 0.2, 'loadMode': 'plate', 'maxPerCheck': 0}, **extra),
                        'deltaAtAppliedPeak': delta, 'deltaAtPeak': delta, 'nCrushed': crushed}, fh)
         rows.append({'runId': rid, 'line': len(rows) + 2, 'row': {'seed': str(seed), 'Tc': str(tc)}})
     with open(os.path.join(d, 'study.json'), 'w') as fh:
@@ -55,6 +56,16 @@ def test_means_and_trends_by_hand(tmp_path):
     assert tr['sequential']['change'] == pytest.approx(0.0) and tr['sequential']['n'] == 2
     # differences +1 and -1 mm: standard deviation sqrt(2) mm, standard error sqrt(2)/sqrt(2) = 1 mm
     assert tr['sequential']['sem'] == pytest.approx(0.001)
+    # the crushes of a run (a record's crushes.csv): 4 Hz, so the applied peak is at t = 0.125 s; 1 of 4
+    # crushes after it, the largest ratio 2.5
+    run = tmp_path / 'var' / 'runs' / 'Tc=0.01,maxPerCheck=1,seed=1'
+    (run / 'crushes.csv').write_text('t,radius,ratio\n0.1,0.02,1.1\n0.11,0.02,2.5\n0.12,0.01,1.2\n0.13,0.01,1.0\n')
+    (run / 'checks.csv').write_text('t,iter,nCrushed,maxStressRatio\n0.1,1,1,1.1\n0.11,2,1,9\n0.12,3,1,1.2\n0.13,4,1,1\n')
+    rows = collect(str(tmp_path / 'base'), str(tmp_path / 'var'))
+    st = {(r['variant'], r['Tc']): r for r in table(rows)}
+    assert st[('sequential', 0.01)]['afterPeak_mean'] == pytest.approx(1 / 4)
+    assert st[('sequential', 0.01)]['ratioAtCrushMax_mean'] == pytest.approx(2.5)
+    assert np.isnan(st[(BASELINE, 0.0)]['afterPeak_mean'])  # no crushes recorded
     # the script writes the tables and the figure
     out = tmp_path / 'out'
     p = subprocess.run([sys.executable, os.path.join(ROOT, 'scripts', 'tc_mechanisms.py'), str(tmp_path / 'base'), str(tmp_path / 'var'),

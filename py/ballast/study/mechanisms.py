@@ -11,6 +11,7 @@ mean displacement with T_c and the other variants keep it.
 import numpy as np
 
 from .aggregate import StudyData, checkStats
+from .records import crushTable
 
 BASELINE = 'batch (the paper)'
 DEFAULT_DAMPING = 0.2  # the oedometer's default local damping [-]
@@ -30,7 +31,9 @@ def variantOf(params):
 
 def collect(*studies):
     """One dict per finished run of the study folders: variant, Tc, seed, delta at the peak of the
-    applied force [m], crushed grains, crushing checks and the largest sigma/f_t at them."""
+    applied force [m], crushed grains, crushing checks, the largest sigma/f_t of a grain when it crushed,
+    and the crushes after the peak of the applied force (t > 1/(2f): the crushing that delta at the peak
+    does not see)."""
     out = []
     for path in studies:
         data = StudyData(path, param='Tc')
@@ -39,22 +42,34 @@ def collect(*studies):
             row = {'variant': variantOf(s['params']), 'Tc': float(s['params']['Tc']), 'seed': r['seed'],
                    'delta': s[data.peak], 'nCrushed': s['nCrushed']}
             row.update(checkStats(r['dir']))
+            crushes = crushTable(r['dir'])
+            if crushes is not None:
+                row['crushesAfterPeak'] = int(np.sum(crushes[0] > 0.5 / float(s['params']['f'])))
+                row['crushesListed'] = len(crushes[0])
             out.append(row)
     return out
 
 
 def table(rows):
-    """Per (variant, Tc): n, mean and sample standard deviation of delta, its standard error, and the
-    mean crushes; sorted by variant (the baseline first) and Tc."""
+    """Per (variant, Tc): n, mean and sample standard deviation of delta, its standard error, the mean
+    crushes, and over the runs that crushed (and have their crushes) the mean share of crushes after the
+    peak and the mean of each run's largest sigma/f_t at a crush (NaN if none); sorted by variant (the
+    baseline first) and Tc."""
     keys = sorted(set((r['variant'], r['Tc']) for r in rows), key=lambda k: (k[0] != BASELINE, k[0], k[1]))
     res = []
     for v, tc in keys:
-        d = np.array([r['delta'] for r in rows if (r['variant'], r['Tc']) == (v, tc)])
+        mine = [r for r in rows if (r['variant'], r['Tc']) == (v, tc)]
+        d = np.array([r['delta'] for r in mine])
         n = len(d)
         std = float(np.std(d, ddof=1)) if n > 1 else float('nan')
+        crushed = [r for r in mine if r.get('crushesListed')]
         res.append({'variant': v, 'Tc': tc, 'n': n, 'delta_mean': float(np.mean(d)), 'delta_std': std,
                     'delta_sem': std / np.sqrt(n) if n > 1 else float('nan'),
-                    'nCrushed_mean': float(np.mean([r['nCrushed'] for r in rows if (r['variant'], r['Tc']) == (v, tc)]))})
+                    'nCrushed_mean': float(np.mean([r['nCrushed'] for r in mine])),
+                    'afterPeak_mean': float(np.mean([r['crushesAfterPeak'] / r['crushesListed'] for r in crushed]))
+                    if crushed else float('nan'),
+                    'ratioAtCrushMax_mean': float(np.mean([r['ratioAtCrushMax'] for r in crushed]))
+                    if crushed and all(r.get('ratioAtCrushMax') is not None for r in crushed) else float('nan')})
     return res
 
 
