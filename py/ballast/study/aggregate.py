@@ -249,12 +249,13 @@ def plots(data, outDir, xlog='auto'):
     fig, ax = plt.subplots(figsize=(8, 5))
     for s in data.seeds:
         rs = sorted([r for r in data.runs if r['seed'] == s], key=lambda r: data.values.index(r['value']))
-        ax.plot([x[r['value']] for r in rs], [r['summary'][data.peak] * 1e3 for r in rs], '-', color='0.7', lw=0.8, zorder=1)
+        ax.plot([x[r['value']] for r in rs], [r['summary'][data.peak] * 1e3 for r in rs], '-o', color='0.7', lw=0.8, ms=2.5,
+                zorder=1)  # markers: a realization with one value shows too
     st = data.stats()
     ax.errorbar([x[s['value']] for s in st], [s[data.peak + '_mean'] * 1e3 for s in st],
                 yerr=[0 if math.isnan(s[data.peak + '_std']) else s[data.peak + '_std'] * 1e3 for s in st],
                 fmt='o', color='C0', ecolor='C0', capsize=4, lw=1.5, zorder=3, label='mean $\\pm$ standard deviation')
-    ax.plot([], [], '-', color='0.7', label='one realization (seed)')
+    ax.plot([], [], '-o', color='0.7', ms=2.5, label='one realization (seed)')
     ax.set_xscale(scale)
     if ticks is not None:
         ax.set_xticks([x[v] for v in data.values])
