@@ -97,8 +97,9 @@ def trends(rows, pairedSeeds=True):
 
 
 def figure(rows, out):
-    """delta at the peak of the applied force (mean +- standard deviation) and the mean crushes
-    against T_c, a line per variant; T_c = 0 (every step) one step left of the smallest."""
+    """delta at the peak of the applied force (mean +- standard deviation), the mean crushes and the mean
+    of each run's largest sigma/f_t at a crush against T_c, a line per variant; T_c = 0 (every step) one
+    step left of the smallest."""
     import matplotlib
     matplotlib.use('Agg')
     import matplotlib.pyplot as plt
@@ -107,7 +108,7 @@ def figure(rows, out):
     pos = [t for t in tcs if t > 0]
     ratio = (max(pos) / min(pos)) ** (1 / max(len(pos) - 1, 1)) if len(pos) > 1 else 10.0
     x = {t: (t if t > 0 else min(pos) / ratio) for t in tcs}
-    fig, (a1, a2) = plt.subplots(1, 2, figsize=(11, 4.3))
+    fig, (a1, a2, a3) = plt.subplots(1, 3, figsize=(15, 4.5))
     variants = list(dict.fromkeys(r['variant'] for r in st))
     for i, v in enumerate(variants):
         mine = [r for r in st if r['variant'] == v]
@@ -115,7 +116,10 @@ def figure(rows, out):
         a1.errorbar(xs, [1e3 * r['delta_mean'] for r in mine], yerr=[1e3 * np.nan_to_num(r['delta_std']) for r in mine],
                     fmt='-o', capsize=3, color='C%d' % i, label='%s (n = %s)' % (v, '/'.join(str(r['n']) for r in mine)))
         a2.plot(xs, [r['nCrushed_mean'] for r in mine], '-o', color='C%d' % i, label=v)
-    for a, ylabel in ((a1, r'$\delta$ at the peak of the applied force [mm]'), (a2, 'grains crushed, mean [-]')):
+        a3.plot(xs, [r['ratioAtCrushMax_mean'] for r in mine], '-o', color='C%d' % i, label=v)
+    a3.axhline(1.0, color='k', lw=0.8, ls=':')
+    for a, ylabel in ((a1, r'$\delta$ at the peak of the applied force [mm]'), (a2, 'grains crushed, mean [-]'),
+                      (a3, r'largest $\sigma/f_t$ of a grain when it crushed, mean [-]')):
         a.set_xscale('log')
         a.set_xticks([x[t] for t in tcs])
         a.set_xticklabels(['every step' if t == 0 else '%.3g' % t for t in tcs], rotation=30, fontsize=8)
