@@ -5,7 +5,8 @@
     scripts/tc_mechanisms.py docs/studies/Tc-4Hz docs/studies/Tc-variants --out docs/studies/Tc-variants
 writes mechanisms.csv (per variant and T_c: n, mean, std, standard error of delta, mean crushes, the share of
 crushes after the peak of the applied force, the largest sigma/f_t of a grain when it crushed),
-trends.csv (per variant, the change of mean delta from one T_c to the next on shared seeds) and
+trends.csv (per variant, the change of delta from one T_c to the next beside the baseline's on the same seeds,
+and the difference of the two: does the variant keep the trend?) and
 mechanisms.png.
 """
 import argparse
@@ -42,7 +43,12 @@ def main(argv=None):
             r['variant'], r['Tc'], r['n'], 1e3 * r['delta_mean'], 1e3 * r['delta_std'], r['nCrushed_mean'],
             100 * r['afterPeak_mean'], r['ratioAtCrushMax_mean']))
     print(writeCsv(table, os.path.join(a.out, 'mechanisms.csv')))
-    print(writeCsv(mechanisms.trends(rows), os.path.join(a.out, 'trends.csv')))
+    tr = mechanisms.trends(rows)
+    for r in tr:
+        print('%-28s Tc %-9g -> %-9g n %3d  change %6.1f +- %4.1f mm  baseline %6.1f +- %4.1f mm  effect %6.1f +- %4.1f mm' % (
+            r['variant'], r['Tc0'], r['Tc1'], r['n'], *(1e3 * r[k] for k in (
+                'change', 'sem', 'baselineChange', 'baselineSem', 'effect', 'effectSem'))))
+    print(writeCsv(tr, os.path.join(a.out, 'trends.csv')))
     print(mechanisms.figure(rows, os.path.join(a.out, 'mechanisms.png')))
     return 0
 

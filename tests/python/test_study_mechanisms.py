@@ -53,9 +53,13 @@ def test_means_and_trends_by_hand(tmp_path):
     tr = {t['variant']: t for t in trends(rows)}
     # on the seeds shared with the baseline (1, 2 for the variant; all three for the baseline itself)
     assert tr[BASELINE]['change'] == pytest.approx(-0.020) and tr[BASELINE]['n'] == 3 and tr[BASELINE]['sem'] == pytest.approx(0)
+    assert tr[BASELINE]['effect'] == 0
     assert tr['sequential']['change'] == pytest.approx(0.0) and tr['sequential']['n'] == 2
     # differences +1 and -1 mm: standard deviation sqrt(2) mm, standard error sqrt(2)/sqrt(2) = 1 mm
     assert tr['sequential']['sem'] == pytest.approx(0.001)
+    # the baseline falls by 20 mm on seeds 1 and 2 too: the variant removes the trend, effect +20 +- 1 mm
+    assert tr['sequential']['baselineChange'] == pytest.approx(-0.020) and tr['sequential']['baselineSem'] == pytest.approx(0)
+    assert tr['sequential']['effect'] == pytest.approx(0.020) and tr['sequential']['effectSem'] == pytest.approx(0.001)
     # the crushes of a run (a record's crushes.csv): 4 Hz, so the applied peak is at t = 0.125 s; 1 of 4
     # crushes after it, the largest ratio 2.5
     run = tmp_path / 'var' / 'runs' / 'Tc=0.01,maxPerCheck=1,seed=1'

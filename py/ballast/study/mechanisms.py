@@ -73,26 +73,33 @@ def table(rows):
     return res
 
 
-def trends(rows, pairedSeeds=True):
-    """Per variant, the change of mean delta from each T_c to the next larger one it has, with its
-    standard error, on the seeds the variant and the baseline share at both (pairedSeeds) so that
-    the variants are compared on the same realizations: [{variant, Tc0, Tc1, change, sem, n}]."""
+def trends(rows):
+    """Per variant, the change of delta from each T_c it has to the next larger one, on the seeds it shares
+    with the baseline at both, beside the baseline's change over the same T_c and seeds: does the variant
+    keep the trend? [{variant, Tc0, Tc1, n, change, sem, baselineChange, baselineSem, effect, effectSem}],
+    effect = the mean of (the variant's change - the baseline's) per seed, with its standard error. The
+    baseline's own rows compare it with itself (effect 0)."""
+    def deltas(variant, tc):
+        return {r['seed']: r['delta'] for r in rows if r['variant'] == variant and r['Tc'] == tc}
+
+    def meanSem(x):
+        n = len(x)
+        return (float(np.mean(x)) if n else float('nan'),
+                float(np.std(x, ddof=1) / np.sqrt(n)) if n > 1 else float('nan'))
+
     out = []
     for v in sorted(set(r['variant'] for r in rows), key=lambda x: (x != BASELINE, x)):
-        mine = [r for r in rows if r['variant'] == v]
-        tcs = sorted(set(r['Tc'] for r in mine))
+        tcs = sorted(set(r['Tc'] for r in rows if r['variant'] == v))
         for a, b in zip(tcs, tcs[1:]):
-            at = {r['seed']: r['delta'] for r in mine if r['Tc'] == a}
-            bt = {r['seed']: r['delta'] for r in mine if r['Tc'] == b}
-            seeds = sorted(set(at) & set(bt))
-            if pairedSeeds:
-                base = [r for r in rows if r['variant'] == BASELINE]
-                for t in (a, b):
-                    seeds = [s for s in seeds if any(r['seed'] == s and r['Tc'] == t for r in base)]
-            diff = np.array([bt[s] - at[s] for s in seeds])
-            n = len(diff)
-            out.append({'variant': v, 'Tc0': a, 'Tc1': b, 'n': n, 'change': float(np.mean(diff)) if n else float('nan'),
-                        'sem': float(np.std(diff, ddof=1) / np.sqrt(n)) if n > 1 else float('nan')})
+            va, vb, ba, bb = deltas(v, a), deltas(v, b), deltas(BASELINE, a), deltas(BASELINE, b)
+            seeds = sorted(set(va) & set(vb) & set(ba) & set(bb))
+            mine = np.array([vb[s] - va[s] for s in seeds])
+            base = np.array([bb[s] - ba[s] for s in seeds])
+            row = {'variant': v, 'Tc0': a, 'Tc1': b, 'n': len(seeds)}
+            row['change'], row['sem'] = meanSem(mine)
+            row['baselineChange'], row['baselineSem'] = meanSem(base)
+            row['effect'], row['effectSem'] = meanSem(mine - base)
+            out.append(row)
     return out
 
 
