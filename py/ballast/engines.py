@@ -189,9 +189,9 @@ class BallastCrushEngine(_BallastEngine):
         'massLost': (0.0, 'grain mass lost by crushing [kg]'),
         'events': ([], 'one dict per crushed grain: kind, t [s], iter, id, pos [m], radius [m], value (sigma_e [Pa]), '
                        'strength (f_t [Pa]; f_t (1 - D) with fatigue), newIds; energyBefore, energyAfter (the first '
-                       'check at least 10 steps after) and with keep=volume energyGrown: [kinetic, elastic] [J] of '
+                       'check at least %d steps after) and with keep=volume energyGrown: [kinetic, elastic] [J] of '
                        'the grain or its fragments, its neighbours before the crush and those of the fragments '
-                       '(ballast.energy)'),
+                       '(ballast.energy)' % _ENERGY_AFTER_STEPS),
         'nChecks': (0, 'checks run so far'),
         'checkSeconds': (0.0, 'wall time spent in checks, before the state is written to O.tags [s]'),
         'maxStressRatio': (0.0, 'largest sigma_e / f_t over the grains at the last check [-]'),

@@ -60,6 +60,9 @@ def meanStd(xs):
     return mean, float(np.std(xs, ddof=1)) if len(xs) > 1 else float('nan')
 
 
+CHECK_STATS = ('crushingChecks', 'crushesPerCrushingCheck', 'ratioAtCrushMax', 'ratioAtCrushMean')  # checkStats' keys
+
+
 def checkStats(runDir):
     """From the per-check log (checks.csv, or a record's: every check that crushed is in both): the checks
     that crushed and the grains each crushed on average; from the crushes (events.csv, or a record's
@@ -74,8 +77,8 @@ def checkStats(runDir):
         return {}
     hit = c[c['nCrushed'] > 0] if c.size else c
     n = int(hit.size)
-    out = {'crushingChecks': n, 'crushesPerCrushingCheck': float(np.mean(hit['nCrushed'])) if n else None,
-           'ratioAtCrushMax': None, 'ratioAtCrushMean': None}
+    out = dict.fromkeys(CHECK_STATS)
+    out.update(crushingChecks=n, crushesPerCrushingCheck=float(np.mean(hit['nCrushed'])) if n else None)
     crushes = crushTable(runDir)
     ratios = crushes[2] if crushes is not None else np.array([])
     if ratios.size:
@@ -196,6 +199,15 @@ def axisPositions(data, xlog):
     return x, [(zero if v == 0 else '%.3g' % v) for v in vals], 'log'
 
 
+def paramAxis(ax, data, x, ticks, scale):
+    """The studied parameter's axis (axisPositions): scale, a tick per value with its label."""
+    ax.set_xscale(scale)
+    if ticks is not None:
+        ax.set_xticks([x[v] for v in data.values])
+        ax.set_xticklabels(ticks, rotation=45 if scale == 'log' else 0, ha='right' if scale == 'log' else 'center', fontsize=8)
+        ax.minorticks_off()
+
+
 def plots(data, outDir, xlog='auto'):
     """fd_curves.png (Fig. 4), delta_peak.png (Fig. 5) and, when the runs have a per-check log, checks.png in
     outDir; returns their paths."""
@@ -256,11 +268,7 @@ def plots(data, outDir, xlog='auto'):
                 yerr=[0 if math.isnan(s[data.peak + '_std']) else s[data.peak + '_std'] * 1e3 for s in st],
                 fmt='o', color='C0', ecolor='C0', capsize=4, lw=1.5, zorder=3, label='mean $\\pm$ standard deviation')
     ax.plot([], [], '-o', color='0.7', ms=2.5, label='one realization (seed)')
-    ax.set_xscale(scale)
-    if ticks is not None:
-        ax.set_xticks([x[v] for v in data.values])
-        ax.set_xticklabels(ticks, rotation=45 if scale == 'log' else 0, ha='right' if scale == 'log' else 'center', fontsize=8)
-        ax.minorticks_off()
+    paramAxis(ax, data, x, ticks, scale)
     ax.legend(fontsize=8)
     dp = save(fig, ax, LABELS.get(data.param, data.param), r'displacement at peak %sforce $\delta$ [mm]' % (
               'applied ' if data.peak == 'deltaAtAppliedPeak' else ''),
@@ -294,11 +302,7 @@ def checksPlot(data, outDir, x, ticks, scale):
             ax.plot(x[v], ys.mean(), '_', ms=22, mew=2.5, color='C3', zorder=3)
         ax.plot([], [], 'o', ms=3.5, color='0.45', label='one run')
         ax.plot([], [], '_', ms=14, mew=2.5, color='C3', label='mean')
-        ax.set_xscale(scale)
-        if ticks is not None:
-            ax.set_xticks([x[v] for v in data.values])
-            ax.set_xticklabels(ticks, rotation=45 if scale == 'log' else 0, ha='right' if scale == 'log' else 'center', fontsize=8)
-            ax.minorticks_off()
+        paramAxis(ax, data, x, ticks, scale)
         ax.set_xlabel(LABELS.get(data.param, data.param))
         ax.set_ylabel(ylabel)
         ax.grid(alpha=0.3)

@@ -10,7 +10,7 @@ mean displacement with T_c and the other variants keep it.
 """
 import numpy as np
 
-from .aggregate import StudyData, checkStats
+from .aggregate import CHECK_STATS, StudyData
 from .records import crushTable
 
 BASELINE = 'batch (the paper)'
@@ -41,7 +41,7 @@ def collect(*studies):
             s = r['summary']
             row = {'variant': variantOf(s['params']), 'Tc': float(s['params']['Tc']), 'seed': r['seed'],
                    'delta': s[data.peak], 'nCrushed': s['nCrushed']}
-            row.update(checkStats(r['dir']))
+            row.update((k, s[k]) for k in CHECK_STATS if k in s)  # StudyData merged checkStats into the summary
             crushes = crushTable(r['dir'])
             if crushes is not None:
                 row['crushesAfterPeak'] = int(np.sum(crushes[0] > 0.5 / float(s['params']['f'])))
