@@ -8,7 +8,7 @@ import os
 
 import pytest
 
-from ballast.study.aggregate import StudyData, aggregate, axisPositions, effectTest, writeCsv
+from ballast.study.aggregate import StudyData, aggregate, axisPositions, blockedTest, effectTest, writeCsv
 from ballast.study.options import StudyError
 
 # (seed, Tc [s], delta at peak [m], crushed); seed 3 at Tc = 0.01 and seeds 2-3 at 0.04 did not finish
@@ -156,6 +156,30 @@ def test_kruskal_wallis_and_the_detectable_difference_by_hand(tmp_path):
     aggregate(str(tmp_path / 's'), outDir=str(tmp_path / 'agg'), figures=False)
     with open(str(tmp_path / 'agg' / 'test.json')) as fh:
         assert json.load(fh)['H'] == pytest.approx(t['H'])
+
+
+def test_friedman_within_seeds_by_hand(tmp_path):
+    # y = seed offset (0, 5, 10 mm) + Tc offset (0, 10, 20 mm) + residual +-1 mm with zero row and column sums:
+    # every seed ranks the three values 1, 2, 3: rank sums 3, 6, 9, b = k = 3:
+    # chi2 = 12 / (b k (k + 1)) (3² + 6² + 9²) - 3 b (k + 1) = 126/3 - 36 = 6; 2 degrees of freedom: p = exp(-3);
+    # residual standard deviation sqrt(4 (1 mm)² / (2 * 2)) = 1 mm: detectable (1.959964 + 0.841621) 1 mm sqrt(2/3)
+    e = {(1, 0): 1, (1, 0.01): -1, (2, 0): -1, (2, 0.01): 1}
+    runs = [(s, tc, 1e-3 * (5 * (s - 1) + 10 * j + e.get((s, tc), 0)), 0) for s in (1, 2, 3) for j, tc in enumerate((0, 0.01, 0.04))]
+    t = blockedTest(StudyData(fabricate(tmp_path / 's', runs=runs, missing=[])))
+    assert t['chi2'] == pytest.approx(6.0, rel=1e-12) and t['p'] == pytest.approx(math.exp(-3), rel=1e-9)
+    assert t['residualStd [m]'] == pytest.approx(1e-3, rel=1e-9)
+    assert t['detectableDifference [m]'] == pytest.approx(2.801585e-3 * math.sqrt(2 / 3), rel=1e-6)
+    assert (t['seeds'], t['values']) == (3, 3)
+    # a seed missing one value is not a block; with one complete seed left there is no test
+    assert blockedTest(StudyData(fabricate(tmp_path / 'gap', runs=runs[:-1], missing=[])))['seeds'] == 2
+    assert blockedTest(StudyData(fabricate(tmp_path / 'fig5', runs=RUNS, missing=MISSING))) is None
+    # two values only: Friedman needs three
+    two = [r for r in runs if r[1] != 0.04]
+    assert blockedTest(StudyData(fabricate(tmp_path / 'two', runs=two, missing=[]))) is None
+    # aggregate writes it beside Kruskal-Wallis
+    aggregate(str(tmp_path / 's'), outDir=str(tmp_path / 'agg'), figures=False)
+    with open(str(tmp_path / 'agg' / 'test.json')) as fh:
+        assert json.load(fh)['blocked']['chi2'] == pytest.approx(6.0)
 
 
 def test_runs_csv_carries_every_parameter_of_every_run(tmp_path):
