@@ -194,17 +194,23 @@ def axisPositions(data, xlog):
     useLog = xlog == 'yes' or (xlog == 'auto' and len(pos) >= 3 and max(pos) / min(pos) >= 20 and all(v >= 0 for v in vals))
     if not useLog:
         return {v: v for v in vals}, None, 'linear'
-    ratio = (max(pos) / min(pos))**(1 / max(len(pos) - 1, 1))
-    x = {v: (v if v > 0 else min(pos) / ratio) for v in vals}
-    zero = 'every step' if data.param == 'Tc' else '0'
-    return x, [(zero if v == 0 else '%.3g' % v) for v in vals], 'log'
+    x, ticks = logPositions(vals, 'every step' if data.param == 'Tc' else '0')
+    return x, ticks, 'log'
 
 
-def paramAxis(ax, data, x, ticks, scale):
+def logPositions(values, zero):
+    """x of each value (>= 0) on a log axis, 0 put one mean step left of the smallest positive value,
+    and the tick labels (`zero` for 0)."""
+    pos = [v for v in values if v > 0]
+    ratio = (max(pos) / min(pos))**(1 / (len(pos) - 1)) if len(pos) > 1 else 10.0
+    return {v: (v if v > 0 else min(pos) / ratio) for v in values}, [(zero if v == 0 else '%.3g' % v) for v in values]
+
+
+def paramAxis(ax, values, x, ticks, scale):
     """The studied parameter's axis (axisPositions): scale, a tick per value with its label."""
     ax.set_xscale(scale)
     if ticks is not None:
-        ax.set_xticks([x[v] for v in data.values])
+        ax.set_xticks([x[v] for v in values])
         ax.set_xticklabels(ticks, rotation=45 if scale == 'log' else 0, ha='right' if scale == 'log' else 'center', fontsize=8)
         ax.minorticks_off()
 
@@ -269,7 +275,7 @@ def plots(data, outDir, xlog='auto'):
                 yerr=[0 if math.isnan(s[data.peak + '_std']) else s[data.peak + '_std'] * 1e3 for s in st],
                 fmt='o', color='C0', ecolor='C0', capsize=4, lw=1.5, zorder=3, label='mean $\\pm$ standard deviation')
     ax.plot([], [], '-o', color='0.7', ms=2.5, label='one realization (seed)')
-    paramAxis(ax, data, x, ticks, scale)
+    paramAxis(ax, data.values, x, ticks, scale)
     ax.legend(fontsize=8)
     dp = save(fig, ax, LABELS.get(data.param, data.param), r'displacement at peak %sforce $\delta$ [mm]' % (
               'applied ' if data.peak == 'deltaAtAppliedPeak' else ''),
@@ -303,7 +309,7 @@ def checksPlot(data, outDir, x, ticks, scale):
             ax.plot(x[v], ys.mean(), '_', ms=22, mew=2.5, color='C3', zorder=3)
         ax.plot([], [], 'o', ms=3.5, color='0.45', label='one run')
         ax.plot([], [], '_', ms=14, mew=2.5, color='C3', label='mean')
-        paramAxis(ax, data, x, ticks, scale)
+        paramAxis(ax, data.values, x, ticks, scale)
         ax.set_xlabel(LABELS.get(data.param, data.param))
         ax.set_ylabel(ylabel)
         ax.grid(alpha=0.3)

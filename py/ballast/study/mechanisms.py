@@ -10,7 +10,7 @@ mean displacement with T_c and the other variants keep it.
 """
 import numpy as np
 
-from .aggregate import CHECK_STATS, StudyData
+from .aggregate import CHECK_STATS, StudyData, logPositions, paramAxis
 from .records import crushTable
 
 BASELINE = 'batch (the paper)'
@@ -112,9 +112,7 @@ def figure(rows, out):
     import matplotlib.pyplot as plt
     st = table(rows)
     tcs = sorted(set(r['Tc'] for r in st))
-    pos = [t for t in tcs if t > 0]
-    ratio = (max(pos) / min(pos)) ** (1 / max(len(pos) - 1, 1)) if len(pos) > 1 else 10.0
-    x = {t: (t if t > 0 else min(pos) / ratio) for t in tcs}
+    x, ticks = logPositions(tcs, 'every step')
     fig, (a1, a2, a3) = plt.subplots(1, 3, figsize=(15, 4.5))
     variants = list(dict.fromkeys(r['variant'] for r in st))
     for i, v in enumerate(variants):
@@ -127,10 +125,7 @@ def figure(rows, out):
     a3.axhline(1.0, color='k', lw=0.8, ls=':')
     for a, ylabel in ((a1, r'$\delta$ at the peak of the applied force [mm]'), (a2, 'grains crushed, mean [-]'),
                       (a3, r'largest $\sigma/f_t$ of a grain when it crushed, mean [-]')):
-        a.set_xscale('log')
-        a.set_xticks([x[t] for t in tcs])
-        a.set_xticklabels(['every step' if t == 0 else '%.3g' % t for t in tcs], rotation=30, fontsize=8)
-        a.minorticks_off()
+        paramAxis(a, tcs, x, ticks, 'log')
         a.set_xlabel('crushing period $T_c$ [s]')
         a.set_ylabel(ylabel)
         a.grid(alpha=0.3)
