@@ -1,4 +1,4 @@
-"""ballast.oedometer.loading: eq. 8 by hand, and each load mode on one grain: the applied force is eq. 8,
+"""ballast.oedometer.loading: each load mode on one grain: the applied force is eq. 8 (ballast.oedometer.loadcurve),
 the grain's force on the plate follows it, the floor carries that force plus the grain's weight
 (statics), and the displacement mode moves the plate at its speed until the grain carries Fmax."""
 import math
@@ -10,34 +10,14 @@ pytest.importorskip('yade')
 from yade import O, utils  # noqa: E402
 
 from ballast.oedometer import callbacks, check, scene  # noqa: E402
-from ballast.oedometer.loading import DisplacementLoad, PlateLoad, ServoLoad, eq8, loadCurve  # noqa: E402
+from ballast.oedometer.loadcurve import eq8, loadCurve  # noqa: E402
+from ballast.oedometer.loading import DisplacementLoad, PlateLoad, ServoLoad  # noqa: E402
 
 FMAX, F = 2e4, 50.0   # [N], [Hz]: a small load, a short cycle
 R = 0.02              # [m] the grain
 TOL_FOLLOW = 0.03     # [-] of Fmax: RMS of plate force - eq. 8 once the plate is seated (servo lag)
 TOL_STATICS = 0.01    # [-] of Fmax: floor force - (plate force + weight), the grain's inertia at 50 Hz
 TOL_APPLIED = 1e-6    # [-] of Fmax: the plate's applied force against eq. 8 (interpolated from 4000 samples: 2.5e-7)
-
-
-def test_eq8_by_hand():
-    T = 1 / F
-    assert eq8(FMAX, F, 0.0) == pytest.approx(0.0, abs=1e-9 * FMAX)
-    assert eq8(FMAX, F, T / 4) == pytest.approx(FMAX / 2, rel=1e-12)
-    assert eq8(FMAX, F, T / 2) == pytest.approx(FMAX, rel=1e-12)
-    assert eq8(FMAX, F, 3 * T / 4) == pytest.approx(FMAX / 2, rel=1e-12)
-    t = np.linspace(0, T, 7)
-    np.testing.assert_allclose(eq8(FMAX, F, t), [eq8(FMAX, F, float(x)) for x in t], rtol=1e-14, atol=1e-9)
-
-
-def test_load_curve_by_hand():
-    """Eq. 8 up to the peak at T/2, then between Fmax and Fmin: Fmin at T, 2T, ...; Fmax at 3T/2; halfway
-    at 5T/4; with Fmin = 0 eq. 8 itself."""
-    T, Fmin = 1 / F, 0.25 * FMAX
-    for t, want in ((0, 0), (T / 4, FMAX / 2), (T / 2, FMAX), (T, Fmin), (1.25 * T, (FMAX + Fmin) / 2), (1.5 * T, FMAX),
-                    (2 * T, Fmin)):
-        assert loadCurve(FMAX, Fmin, F, t) == pytest.approx(want, rel=1e-12, abs=1e-9 * FMAX)
-    t = np.linspace(0, 3 * T, 50)
-    np.testing.assert_allclose(loadCurve(FMAX, 0.0, F, t), eq8(FMAX, F, t), rtol=1e-12, atol=1e-9 * FMAX)
 
 
 class OneGrain:

@@ -182,6 +182,28 @@ def test_friedman_within_seeds_by_hand(tmp_path):
         assert json.load(fh)['blocked']['chi2'] == pytest.approx(6.0)
 
 
+def test_applied_force_at_the_first_crush(tmp_path):
+    # f = 2 Hz, Fmax = 1.5 MN: first crush at t = 1/12 s, eq. 8: Fmax/2 (sin(pi/3 - pi/2) + 1) = Fmax/2 (1 - sin(pi/6))
+    # = 375 kN, whatever the order of the crushes in the file; a run without its loading parameters has none
+    d = fabricate(tmp_path / 's', more={'f': lambda i: 2.0, 'Fmax': lambda i: 1.5e6})
+    runs = sorted(os.listdir(os.path.join(d, 'runs')))
+    for run in runs[:2]:
+        with open(os.path.join(d, 'runs', run, 'checks.csv'), 'w') as fh:
+            fh.write('t,iter,nCrushed,maxStressRatio\n0.1,10,2,1.2\n')
+        with open(os.path.join(d, 'runs', run, 'crushes.csv'), 'w') as fh:
+            fh.write('t,radius,ratio\n0.2,0.02,1.1\n%r,0.02,1.2\n' % (1 / 12))
+    s = {r['runId']: r['summary'] for r in StudyData(d, param='Tc').runs}
+    assert s[runs[0]]['forceAtFirstCrush'] == pytest.approx(375e3, rel=1e-12)
+    assert 'forceAtFirstCrush' not in s[runs[2]]  # no log
+    bare = fabricate(tmp_path / 'bare')
+    run = sorted(os.listdir(os.path.join(bare, 'runs')))[0]
+    with open(os.path.join(bare, 'runs', run, 'checks.csv'), 'w') as fh:
+        fh.write('t,iter,nCrushed,maxStressRatio\n0.1,10,1,1.2\n')
+    with open(os.path.join(bare, 'runs', run, 'crushes.csv'), 'w') as fh:
+        fh.write('t,radius,ratio\n0.1,0.02,1.2\n')
+    assert {r['runId']: r['summary'] for r in StudyData(bare).runs}[run]['forceAtFirstCrush'] is None
+
+
 def test_runs_csv_carries_every_parameter_of_every_run(tmp_path):
     data = StudyData(fabricate(tmp_path / 's', more={'Fmax': lambda i: 1e6 + i}), 'Tc')
     runsCsv, _ = writeCsv(data, str(tmp_path))

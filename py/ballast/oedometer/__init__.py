@@ -4,17 +4,19 @@
     run = Oedometer(seed=2, f=4, pattern=14)
     run.prepare(); run.load(); run.summary()
 
-Modules: :mod:`.parameters` (every parameter, declared once; no YADE needed), :mod:`.scene` (the
-cylinder, materials, engine chain), :mod:`.packing` (the sample), :mod:`.loading` (eq. 8 on a plate),
-:mod:`.outputs` (files, VTK, yade.plot), :mod:`.progress` (phases with progress lines),
-:mod:`.experiment` (Oedometer), :mod:`.commandline` (``yade scripts/oedometer.py``).
+Modules: :mod:`.parameters` (every parameter, declared once) and :mod:`.loadcurve` (eq. 8 and its
+cycles), both without YADE; :mod:`.scene` (the cylinder, materials, engine chain), :mod:`.packing`
+(the sample), :mod:`.loading` (the load on a plate), :mod:`.outputs` (files, VTK, yade.plot),
+:mod:`.progress` (phases with progress lines), :mod:`.experiment` (Oedometer), :mod:`.commandline`
+(``yade scripts/oedometer.py``).
 """
+from .loadcurve import eq8, loadCurve
 from .parameters import PARAMS, check, packingKey
 
 _YADE = {'Oedometer': 'experiment', 'StoredPacking': 'packing', 'PlateLoad': 'loading', 'ServoLoad': 'loading',
-         'DisplacementLoad': 'loading', 'Outputs': 'outputs', 'eq8': 'loading'}
+         'DisplacementLoad': 'loading', 'Outputs': 'outputs'}
 
-__all__ = ['PARAMS', 'check', 'packingKey'] + list(_YADE)
+__all__ = ['PARAMS', 'check', 'eq8', 'loadCurve', 'packingKey'] + list(_YADE)
 
 
 def __getattr__(name):

@@ -20,26 +20,11 @@ from yade.wrapper import InterpolatingDirectedForceEngine, PyRunner
 
 from . import scene
 from .callbacks import command
+from .loadcurve import eq8, loadCurve
 
 # samples of eq. 8 per cycle for the plate's force: linear interpolation errs by at most
 # Fmax pi^2 / (4 N^2) (2e-7 Fmax at N = 4000)
 EQ8_SAMPLES = 4000
-
-
-def eq8(Fmax, f, t):
-    """Eq. 8: the force [N] at loading time t [s] (a number or an array)."""
-    if np.ndim(t):
-        return Fmax / 2 * (np.sin(2 * math.pi * f * np.asarray(t, dtype=float) - math.pi / 2) + 1)
-    return Fmax / 2 * (math.sin(2 * math.pi * f * t - math.pi / 2) + 1)
-
-
-def loadCurve(Fmax, Fmin, f, t):
-    """The load [N] at loading time t [s]: eq. 8 up to its peak at T/2 = 1/(2f), then cycles between Fmax
-    and Fmin, Fmin + (Fmax - Fmin)/2 [1 + cos(2 pi f (t - T/2))]; with Fmin = 0 it is eq. 8 at every t."""
-    t = np.asarray(t, dtype=float)
-    later = Fmin + (Fmax - Fmin) / 2 * (1 + np.cos(2 * math.pi * f * (t - 0.5 / f)))
-    F = np.where(t <= 0.5 / f, eq8(Fmax, f, t), later)
-    return F if F.ndim else float(F)
 
 
 class PlateBase:

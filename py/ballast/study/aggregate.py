@@ -20,6 +20,7 @@ import os
 
 import numpy as np
 
+from ..oedometer.loadcurve import loadCurve
 from ..oedometer.parameters import PARAMS
 from .files import readSummary
 from .options import StudyError
@@ -31,9 +32,10 @@ RESULTS = [('peakForce', 'N'), ('deltaAtPeak', 'm'), ('deltaAtAppliedPeak', 'm')
            ('deltaFinal', 'm'), ('nCrushed', '-'), ('Bg', '%'), ('Br', '-'), ('BBI', '-'),
            ('nAbraded', '-'), ('volumeLost', 'm^3'), ('massLost', 'kg'), ('massInitial', 'kg'), ('nGrainsInitial', '-'),
            ('porosity0', '-'), ('wallSeconds', 's'), ('cpuSeconds', 's'), ('steps', '-'),
-           ('crushingChecks', '-'), ('crushesPerCrushingCheck', '-'), ('ratioAtCrushMax', '-'), ('ratioAtCrushMean', '-')]
+           ('crushingChecks', '-'), ('crushesPerCrushingCheck', '-'), ('ratioAtCrushMax', '-'), ('ratioAtCrushMean', '-'),
+           ('forceAtFirstCrush', 'N')]
 STATS = ['deltaAtPeak', 'deltaAtAppliedPeak', 'deltaMax', 'peakForce', 'nCrushed', 'nAbraded', 'massLost', 'Bg', 'Br',
-         'BBI', 'crushingChecks', 'crushesPerCrushingCheck', 'ratioAtCrushMax', 'wallSeconds', 'cpuSeconds']
+         'BBI', 'crushingChecks', 'crushesPerCrushingCheck', 'ratioAtCrushMax', 'forceAtFirstCrush', 'wallSeconds', 'cpuSeconds']
 LABELS = {'f': 'loading frequency f [Hz]', 'Tc': 'crushing period $T_c$ [s]', 'rMin': '$r_{min}$ [m]', 'ft0': '$f_{t0}$ [Pa m]',
           'gamma': r'reduction factor $\gamma$ [-]', 'pattern': 'replacement pattern'}
 
@@ -61,15 +63,18 @@ def meanStd(xs):
     return mean, float(np.std(xs, ddof=1)) if len(xs) > 1 else float('nan')
 
 
-CHECK_STATS = ('crushingChecks', 'crushesPerCrushingCheck', 'ratioAtCrushMax', 'ratioAtCrushMean')  # checkStats' keys
+CHECK_STATS = ('crushingChecks', 'crushesPerCrushingCheck', 'ratioAtCrushMax', 'ratioAtCrushMean',
+               'forceAtFirstCrush')  # checkStats' keys
 
 
-def checkStats(runDir):
+def checkStats(runDir, params=None):
     """From the per-check log (checks.csv, or a record's: every check that crushed is in both): the checks
     that crushed and the grains each crushed on average; from the crushes (events.csv, or a record's
     crushes.csv) the largest and the mean sigma/f_t of the grains when they crushed (how far above their
     strength rare checks find grains; the log's maxStressRatio also counts fragments below r_min, which
-    never crush). {} without a log."""
+    never crush); with the run's parameters (f, Fmax, Fmin) the applied force when the first grain
+    crushed (the onset: quasi-static loading gives a seed the same onset at every frequency). {} without
+    a log."""
     try:
         c = np.atleast_1d(np.genfromtxt(os.path.join(runDir, 'checks.csv'), delimiter=',', names=True))
     except (OSError, ValueError):
@@ -84,6 +89,9 @@ def checkStats(runDir):
     ratios = crushes[2] if crushes is not None else np.array([])
     if ratios.size:
         out.update(ratioAtCrushMax=float(np.max(ratios)), ratioAtCrushMean=float(np.mean(ratios)))
+        if params and all(k in params for k in ('f', 'Fmax')):
+            out['forceAtFirstCrush'] = loadCurve(float(params['Fmax']), float(params.get('Fmin', 0.0)), float(params['f']),
+                                                 float(np.min(crushes[0])))
     return out
 
 
@@ -124,7 +132,7 @@ class StudyData:
             params = s.get('params') or {}
             # the values as the run read them; from the cell for a summary without them
             value, seed = (params[k] if k in params else cellValue(k, r['row'].get(k)) for k in (self.param, 'seed'))
-            s = dict(s, **checkStats(d))
+            s = dict(s, **checkStats(d, params))
             self.runs.append({'line': r['line'], 'runId': r['runId'], 'value': value, 'seed': seed, 'summary': s, 'dir': d})
         if not self.runs:
             raise StudyError('STUDY: no finished run in %s (run it with scripts/study.py run first)' % path)
@@ -404,11 +412,13 @@ def aggregate(path, param=None, outDir=None, xlog='auto', figures=True):
     if data.missing:
         print('not finished (left out): %d: %s%s' % (len(data.missing), ', '.join(data.missing[:8]),
                                                      ' ...' if len(data.missing) > 8 else ''))
-    print('%-12s %3s  %22s  %22s  %16s' % (data.param, 'n', 'delta at peak [mm]', 'delta max [mm]', 'crushed'))
+    print('%-12s %3s  %22s  %22s  %16s  %20s' % (data.param, 'n', 'delta at peak [mm]', 'delta max [mm]', 'crushed',
+                                                  'F at 1st crush [kN]'))
     for st in data.stats():
-        print('%-12s %3d  %10.2f +- %8.2f  %10.2f +- %8.2f  %6.1f +- %5.1f' % (
+        print('%-12s %3d  %10.2f +- %8.2f  %10.2f +- %8.2f  %6.1f +- %5.1f  %8.0f +- %7.0f' % (
             label(st['value']), st['n'], st[data.peak + '_mean'] * 1e3, st[data.peak + '_std'] * 1e3, st['deltaMax_mean'] * 1e3,
-            st['deltaMax_std'] * 1e3, st['nCrushed_mean'], st['nCrushed_std']))
+            st['deltaMax_std'] * 1e3, st['nCrushed_mean'], st['nCrushed_std'], st['forceAtFirstCrush_mean'] / 1e3,
+            st['forceAtFirstCrush_std'] / 1e3))
     test = effectTest(data)
     if test is not None:
         blocked = blockedTest(data, test['alpha'], test['power'])

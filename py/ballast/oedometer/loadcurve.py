@@ -1,0 +1,21 @@
+"""The applied load of section 4 as a function of loading time (no YADE): eq. 8 up to its peak, and the
+cycles that follow it. loading applies it; the studies read the applied force at an event from it."""
+import math
+
+import numpy as np
+
+
+def eq8(Fmax, f, t):
+    """Eq. 8: the force [N] at loading time t [s] (a number or an array)."""
+    if np.ndim(t):
+        return Fmax / 2 * (np.sin(2 * math.pi * f * np.asarray(t, dtype=float) - math.pi / 2) + 1)
+    return Fmax / 2 * (math.sin(2 * math.pi * f * t - math.pi / 2) + 1)
+
+
+def loadCurve(Fmax, Fmin, f, t):
+    """The load [N] at loading time t [s]: eq. 8 up to its peak at T/2 = 1/(2f), then cycles between Fmax
+    and Fmin, Fmin + (Fmax - Fmin)/2 [1 + cos(2 pi f (t - T/2))]; with Fmin = 0 it is eq. 8 at every t."""
+    t = np.asarray(t, dtype=float)
+    later = Fmin + (Fmax - Fmin) / 2 * (1 + np.cos(2 * math.pi * f * (t - 0.5 / f)))
+    F = np.where(t <= 0.5 / f, eq8(Fmax, f, t), later)
+    return F if F.ndim else float(F)
