@@ -1,0 +1,86 @@
+"""The numbers docs/studies.md quotes for the paper-size studies are the committed records' numbers:
+each table row of the Fig. 5 section is read back and compared with the study's stats.csv (written by
+scripts/aggregate.py from the records), to the digits the table prints."""
+import csv
+import os
+import re
+
+import pytest
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+DOC = os.path.join(ROOT, 'docs', 'studies.md')
+
+
+def section(heading):
+    """The text of docs/studies.md from the line `heading` to the next heading of any level."""
+    with open(DOC) as fh:
+        text = fh.read()
+    start = text.index('\n' + heading + '\n')
+    end = re.search(r'\n#+ ', text[start + len(heading) + 2:])
+    return text[start:start + len(heading) + 2 + (end.start() if end else len(text))]
+
+
+def tableRow(text, label, n):
+    """The n cells after the label of the markdown table row starting with `| label |`."""
+    for line in text.splitlines():
+        cells = [c.strip() for c in line.strip().strip('|').split('|')]
+        if cells[0] == label:
+            assert len(cells) == n + 1, line
+            return cells[1:]
+    raise AssertionError('no table row %r' % label)
+
+
+def stats(study, param):
+    with open(os.path.join(ROOT, 'docs', 'studies', study, 'stats.csv'), newline='') as fh:
+        return sorted(csv.DictReader(fh), key=lambda r: float(r[param]))
+
+
+def numbers(cell):
+    return [float(x) for x in re.findall(r'-?\d+(?:\.\d+)?', cell)]
+
+
+def test_fig5_table_is_the_records():
+    text = section('### Fig. 5 at 4 Hz')
+    st = stats('Tc-4Hz', 'Tc')
+    assert len(st) == 6 and all(r['n'] == '20' for r in st)
+    for cell, r in zip(tableRow(text, 'δ at the applied peak, mean ± sd [mm]', 6), st):
+        mean, sd = numbers(cell)
+        assert mean == pytest.approx(1e3 * float(r['deltaAtAppliedPeak_mean [m]']), abs=0.051)
+        assert sd == pytest.approx(1e3 * float(r['deltaAtAppliedPeak_std [m]']), abs=0.051)
+    for cell, r in zip(tableRow(text, 'δ_max, mean [mm]', 6), st):
+        assert numbers(cell)[0] == pytest.approx(1e3 * float(r['deltaMax_mean [m]']), abs=0.051)
+    for cell, r in zip(tableRow(text, 'grains crushed, mean', 6), st):
+        assert numbers(cell)[0] == pytest.approx(float(r['nCrushed_mean [-]']), abs=0.51)
+    for cell, r in zip(tableRow(text, 'CPU per run, mean', 6), st):
+        assert numbers(cell)[0] == pytest.approx(float(r['cpuSeconds_mean [s]']), abs=0.51)
+
+
+def readCsv(study, name):
+    with open(os.path.join(ROOT, 'docs', 'studies', study, name), newline='') as fh:
+        return list(csv.DictReader(fh))
+
+
+def test_variants_tables_are_the_records():
+    text = section('### Why δ depends on T_c: the variants')
+    mech = {(r['variant'], float(r['Tc'])): r for r in readCsv('Tc-variants', 'mechanisms.csv')}
+    for label, variant in (('damped (`damping 0.6`)', 'damped (0.6)'), ('servo (`loadMode servo`)', 'servo')):
+        for cell, tc in zip(tableRow(text, label, 3), (0.0, 6.25e-4, 0.04)):
+            mean, sd, crushed = numbers(cell)
+            r = mech[variant, tc]
+            assert mean == pytest.approx(1e3 * float(r['delta_mean']), abs=0.051)
+            assert sd == pytest.approx(1e3 * float(r['delta_std']), abs=0.051)
+            assert crushed == pytest.approx(float(r['nCrushed_mean']), abs=0.51)
+    # the effects: "| variant | Tc0 -> Tc1 s | change ± sem | baseline's ± sem | effect ± sem |"
+    trends = {(r['variant'], float(r['Tc0']), float(r['Tc1'])): r for r in readCsv('Tc-variants', 'trends.csv')}
+    rows = [l for l in text.splitlines() if re.match(r'\| (damped|sequential|servo) \| (every step|[\d.e-]+) -> ', l)]
+    assert len(rows) == 5
+    for line in rows:
+        cells = [c.strip() for c in line.strip().strip('|').split('|')]
+        tc0, tc1 = [0.0 if x == 'every step' else float(x) for x in re.findall(r'every step|\d[\d.e-]*', cells[1])]
+        variant = {'damped': 'damped (0.6)'}.get(cells[0], cells[0])
+        r = trends[variant, tc0, tc1]
+        for cell, key in zip(cells[2:], ('change', 'baselineChange', 'effect')):
+            value, sem = numbers(cell)
+            assert value == pytest.approx(1e3 * float(r[key]), abs=0.051)
+            assert sem == pytest.approx(1e3 * float(r[{'change': 'sem', 'baselineChange': 'baselineSem', 'effect': 'effectSem'}[key]]),
+                                        abs=0.051)
