@@ -294,13 +294,14 @@ def plots(data, outDir, xlog='auto'):
 
 def checksPlot(data, outDir, x, ticks, scale):
     """checks.png: from the per-check logs, per value of the parameter, the grains crushed per run and the
-    largest sigma/f_t of a grain when it crushed (how far above their strength rare checks find grains);
-    a point per run, the mean as a bar. None if no run has a log."""
+    largest sigma/f_t of a grain when it crushed (how far above their strength rare checks find grains),
+    a point per run, the mean as a bar; and the applied force at the first crush, a line per seed (a
+    quasi-static onset is flat along it). None if no run has a log."""
     import matplotlib.pyplot as plt
     runs = [r for r in data.runs if r['summary'].get('crushingChecks') is not None]
     if not runs:
         return None
-    fig, axes = plt.subplots(1, 2, figsize=(11, 4.3))
+    fig, axes = plt.subplots(1, 3, figsize=(16, 4.3))
     xs0 = sorted(x.values())
     # the runs of a value spread over +-0.15 of the spacing of the values (a factor on a log axis)
     step = (xs0[-1] / xs0[0]) ** (1 / max(len(xs0) - 1, 1)) if scale == 'log' else \
@@ -323,6 +324,22 @@ def checksPlot(data, outDir, x, ticks, scale):
         ax.grid(alpha=0.3)
         ax.legend(fontsize=8)
     axes[1].axhline(1.0, color='k', lw=0.8, ls=':')
+    onset = axes[2]
+    for seed in data.seeds:
+        mine = [r for r in runs if r['seed'] == seed and r['summary'].get('forceAtFirstCrush') is not None]
+        if mine:
+            onset.plot([x[r['value']] for r in mine], [r['summary']['forceAtFirstCrush'] / 1e3 for r in mine], '-o', ms=3,
+                       lw=0.8, color='0.6', zorder=2)
+    means = [(v, np.mean(f)) for v in data.values for f in [[r['summary']['forceAtFirstCrush'] / 1e3 for r in runs
+             if r['value'] == v and r['summary'].get('forceAtFirstCrush') is not None]] if f]
+    onset.plot([x[v] for v, _ in means], [m for _, m in means], '_', ms=22, mew=2.5, color='C3', zorder=3)
+    onset.plot([], [], '-o', ms=3, lw=0.8, color='0.6', label='one seed')
+    onset.plot([], [], '_', ms=14, mew=2.5, color='C3', label='mean')
+    paramAxis(onset, data.values, x, ticks, scale)
+    onset.set_xlabel(LABELS.get(data.param, data.param))
+    onset.set_ylabel('applied force at the first crush [kN]')
+    onset.grid(alpha=0.3)
+    onset.legend(fontsize=8)
     fig.suptitle('%s: the per-check log of %d runs' % (os.path.basename(data.dir), len(runs)), fontsize=10)
     fig.tight_layout()
     path = os.path.join(outDir, 'checks.png')
