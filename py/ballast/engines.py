@@ -195,11 +195,13 @@ class BallastCrushEngine(_BallastEngine):
         'nChecks': (0, 'checks run so far'),
         'checkSeconds': (0.0, 'wall time spent in checks, before the state is written to O.tags [s]'),
         'maxStressRatio': (0.0, 'largest sigma_e / f_t over the grains at the last check [-]'),
+        'maxCrushableRatio': (0.0, 'largest sigma_e / f_t over the grains that can crush (r >= rMin) at the last '
+                                   'check, 0 if none [-] (fragments below rMin may be far above their f_t)'),
         'nFatigueCrushed': (0, 'grains crushed below their undamaged strength (sigma_e <= f_t), by fatigue damage'),
         'maxDamage': (0.0, 'largest fatigue damage D over the grains at the last check [-]'),
     }
 
-    _perCheck = ('nChecks', 'checkSeconds', 'maxStressRatio', 'maxDamage')  # outputs that change at every check
+    _perCheck = ('nChecks', 'checkSeconds', 'maxStressRatio', 'maxCrushableRatio', 'maxDamage')  # outputs that change at every check
     FRESH = (0.0, 0.0, 1.0, 0.0)  # fatigue state of a new grain: damage, extreme, rising, peaks
 
     def fatigueState(self, ids=None):
@@ -259,7 +261,10 @@ class BallastCrushEngine(_BallastEngine):
             return False
         se, ft, crush = self.evaluate(ids, radii)
         d = self.__dict__
-        d['maxStressRatio'] = float(np.max(se / ft))
+        ratio = se / ft
+        d['maxStressRatio'] = float(np.max(ratio))
+        crushable = radii >= self.rMin  # eq. 1's other condition
+        d['maxCrushableRatio'] = float(np.max(ratio[crushable])) if crushable.any() else 0.0
         strength = ft
         if self.fatigue:  # docs/fatigue.md: a sample of s for every grain, crush when s > 1 - D
             F = self._fatigueRows(ids)

@@ -53,6 +53,7 @@ def test_grain_crushes_when_and_only_when_sigma_e_exceeds_ft(ratio):
         assert (a['x'][0], a['y'][0], a['z'][0]) == (0.0, 0.0, 0.0)   # the grain sat at the origin
     else:
         assert crush.nCrushed == 0 and O.bodies[g] is not None
+        assert crush.maxCrushableRatio == crush.maxStressRatio  # rMin = 0: every grain can crush
 
 
 @pytest.mark.parametrize('criterion', ['vonMises', 'maxContactForce', 'majorPrincipal'])
@@ -244,6 +245,8 @@ def test_rmin_stops_crushing_and_abrasion_equal_radius_is_eligible():
     a = add(BallastAbrasionEngine(strength=1.0, rMin=1.0001 * R, iterPeriod=1))
     O.run(3, True)
     assert c.nCrushed == 0 and a.nAbraded == 0 and c.nChecks > 0 and a.nChecks > 0
+    # the log sees the grain far above its strength, but none that can crush
+    assert c.maxStressRatio > 1e3 and c.maxCrushableRatio == 0.0
     c.rMin = R          # r >= rMin degrades
     O.run(1, True)
     assert c.nCrushed == 1

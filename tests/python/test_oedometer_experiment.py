@@ -196,6 +196,9 @@ def test_checks_log(weak):
     assert np.sum(c[:, 2]) == s['nCrushed']
     assert np.all(np.diff(c[:, 1]) > 0)
     assert np.all(c[c[:, 2] > 0, 3] > 1)  # a check that crushed saw sigma_e / f_t > 1
+    # without fatigue a check crushes exactly when a grain that can crush (r >= rMin) is above f_t; the
+    # fragments below rMin only raise maxStressRatio
+    assert np.array_equal(c[:, 2] > 0, c[:, 4] > 1) and np.all(c[:, 4] <= c[:, 3])
     # the checks fall at loading times k T_c: the first one T_c after the loading started, each next one
     # T_c after the step of the one before, i.e. late by less than a step (dt < 1e-6 s here)
     tc = run.p['Tc']

@@ -14,7 +14,7 @@ from .. import _ballast, grading, harvest
 from .callbacks import command
 
 FD_COLUMNS = ('t', 'F', 'delta', 'nCrushed', 'nAbraded', 'Fapplied')
-CHECK_COLUMNS = ('t', 'iter', 'nCrushed', 'maxStressRatio')
+CHECK_COLUMNS = ('t', 'iter', 'nCrushed', 'maxStressRatio', 'maxCrushableRatio')
 CYCLE_COLUMNS = ('cycle', 't', 'settlement', 'resilient', 'nCrushed', 'nAbraded', 'Bg', 'maxDamage')
 EVENT_COLUMNS = ('kind', 't', 'iter', 'id', 'x', 'y', 'z', 'radius', 'value', 'strength', 'newIds', 'EkBefore',
                  'EeBefore', 'EkAfter', 'EeAfter', 'EkGrown', 'EeGrown')
@@ -176,7 +176,7 @@ class Outputs:
             return
         before = self.checkRows[-1][4] if self.checkRows else 0
         self.checkRows.append((O.time - self.exp.loading.t0, O.iter, crush.nCrushed - before, crush.maxStressRatio,
-                               crush.nCrushed))
+                               crush.nCrushed, crush.maxCrushableRatio))
 
     # ------------------------------------------------------------------ per-grain state
     def grainTable(self):
@@ -221,8 +221,9 @@ class Outputs:
         out = exp.out
         with open(os.path.join(out, 'checks.csv'), 'w') as fh:
             fh.write(','.join(CHECK_COLUMNS) + '\n')
-            for t, it, n, ratio, _ in self.checkRows:
-                fh.write('%.9g,%d,%d,%.9g\n' % (t, it, n, ratio))
+            for row in self.checkRows:  # rows of states saved before maxCrushableRatio have 5 entries
+                t, it, n, ratio = row[:4]
+                fh.write('%.9g,%d,%d,%.9g,%.9g\n' % (t, it, n, ratio, row[5] if len(row) > 5 else float('nan')))
         events = exp.events()
         with open(os.path.join(out, 'events.csv'), 'w', newline='') as fh:
             w = csv.writer(fh)

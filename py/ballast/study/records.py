@@ -92,8 +92,9 @@ def thinFd(columns, maxRows=MAX_FD_ROWS):
 
 def thinChecks(columns, maxRows=MAX_CHECK_ROWS):
     """thinCurve of the per-check log (checks.csv): every check where a grain crushed and the largest
-    stress ratio to 1/200 of its range (what the ft0 of another criterion is read from)."""
-    return thinCurve(columns, ['maxStressRatio'], np.flatnonzero(np.asarray(columns['nCrushed']) > 0), maxRows)
+    stress ratios to 1/200 of their range (what the ft0 of another criterion is read from)."""
+    return thinCurve(columns, [q for q in ('maxStressRatio', 'maxCrushableRatio') if q in columns],
+                     np.flatnonzero(np.asarray(columns['nCrushed']) > 0), maxRows)
 
 
 def readCsv(path):
