@@ -326,7 +326,8 @@ def checksPlot(data, outDir, x, ticks, scale):
     axes[1].axhline(1.0, color='k', lw=0.8, ls=':')
     onset = axes[2]
     for seed in data.seeds:
-        mine = [r for r in runs if r['seed'] == seed and r['summary'].get('forceAtFirstCrush') is not None]
+        mine = sorted((r for r in runs if r['seed'] == seed and r['summary'].get('forceAtFirstCrush') is not None),
+                      key=lambda r: x[r['value']])
         if mine:
             onset.plot([x[r['value']] for r in mine], [r['summary']['forceAtFirstCrush'] / 1e3 for r in mine], '-o', ms=3,
                        lw=0.8, color='0.6', zorder=2)
