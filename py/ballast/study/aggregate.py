@@ -50,6 +50,11 @@ def valueLabel(param, v):
     return '%s = %s%s' % (param, label(v), '' if unit in ('-', '') else ' ' + unit)
 
 
+def count(n, noun):
+    """'1 run', '3 runs'."""
+    return '%d %s%s' % (n, noun, '' if n == 1 else 's')
+
+
 def fmt(v):
     """A CSV cell: floats in full (repr), missing and NaN empty."""
     if v is None or (isinstance(v, float) and math.isnan(v)):
@@ -251,7 +256,7 @@ def plots(data, outDir, xlog='auto'):
             # the paper's F is the load applied (column 6 of the plate load's fd.csv); else the grains' force
             F = a[:, 5] if a.shape[1] > 5 and np.isfinite(a[:, 5]).all() else a[:, 1]
             ax.plot(a[:, 2] * 1e3, F / 1e3, color=seedColor[r['seed']], lw=0.9, label='seed %s' % r['seed'])
-        ax.set_title('%s (%d runs)' % (valueLabel(data.param, v), sum(r['value'] == v for r in data.runs)), fontsize=9)
+        ax.set_title('%s (%s)' % (valueLabel(data.param, v), count(sum(r['value'] == v for r in data.runs), 'run')), fontsize=9)
         ax.grid(alpha=0.3)
         if k % ncol == 0:
             ax.set_ylabel('applied force F [kN]')
@@ -260,7 +265,7 @@ def plots(data, outDir, xlog='auto'):
             ax.tick_params(labelbottom=True)
     for k in range(nv, nrow * ncol):
         axes[k // ncol][k % ncol].set_visible(False)
-    fig.suptitle('%s: %d runs, %d realizations' % (name, len(data.runs), len(data.seeds)), fontsize=10,
+    fig.suptitle('%s: %s, %s' % (name, count(len(data.runs), 'run'), count(len(data.seeds), 'realization')), fontsize=10,
                  y=1 - 0.05 / height, va='top')
     if legendRows:
         fig.legend(handles=[Line2D([], [], color=seedColor[s], lw=1.5, label='seed %s' % s) for s in data.seeds],
@@ -287,7 +292,7 @@ def plots(data, outDir, xlog='auto'):
     ax.legend(fontsize=8)
     dp = save(fig, ax, LABELS.get(data.param, data.param), r'displacement at peak %sforce $\delta$ [mm]' % (
               'applied ' if data.peak == 'deltaAtAppliedPeak' else ''),
-              '%s: %d runs, %d realizations' % (name, len(data.runs), len(data.seeds)), os.path.join(outDir, 'delta_peak.png'))
+              '%s: %s, %s' % (name, count(len(data.runs), 'run'), count(len(data.seeds), 'realization')), os.path.join(outDir, 'delta_peak.png'))
     ck = checksPlot(data, outDir, x, ticks, scale)
     return [fd, dp] + ([ck] if ck else [])
 
@@ -341,7 +346,7 @@ def checksPlot(data, outDir, x, ticks, scale):
     onset.set_ylabel('applied force at the first crush [kN]')
     onset.grid(alpha=0.3)
     onset.legend(fontsize=8)
-    fig.suptitle('%s: the per-check log of %d runs' % (os.path.basename(data.dir), len(runs)), fontsize=10)
+    fig.suptitle('%s: the per-check log of %s' % (os.path.basename(data.dir), count(len(runs), 'run')), fontsize=10)
     fig.tight_layout()
     path = os.path.join(outDir, 'checks.png')
     fig.savefig(path, dpi=130)
@@ -421,8 +426,9 @@ def aggregate(path, param=None, outDir=None, xlog='auto', figures=True):
     data = StudyData(path, param)
     os.makedirs(outDir, exist_ok=True)
     runsCsv, statsCsv = writeCsv(data, outDir)
-    print('%s: %d finished runs of %d rows; studied parameter %s (%d values), %d realizations' % (
-        data.dir, len(data.runs), len(data.info['rows']), data.param, len(data.values), len(data.seeds)))
+    print('%s: %d finished %s of %d rows; studied parameter %s (%s), %s' % (
+        data.dir, len(data.runs), 'run' if len(data.runs) == 1 else 'runs', len(data.info['rows']), data.param,
+        count(len(data.values), 'value'), count(len(data.seeds), 'realization')))
     shas = data.codeVersions()
     if len(shas) > 1:
         print('warning: the runs were made by %d versions of the code (sha1 %s; None: runs without a code sha1)' % (
