@@ -170,6 +170,14 @@ def test_friedman_within_seeds_by_hand(tmp_path):
     assert t['residualStd [m]'] == pytest.approx(1e-3, rel=1e-9)
     assert t['detectableDifference [m]'] == pytest.approx(2.801585e-3 * math.sqrt(2 / 3), rel=1e-6)
     assert (t['seeds'], t['values']) == (3, 3)
+    # Page's trend test: every seed rises, L = 1*3 + 2*6 + 3*9 = 42, the largest there is; exact p of a rise =
+    # P(all three seeds in order) = (1/3!)^3 = 1/216, two-sided 2/216
+    assert t['trend'] == 'rise' and t['pageL'] == 42 and t['pTrend'] == pytest.approx(2 / 216, rel=1e-9)
+    fall = blockedTest(StudyData(fabricate(tmp_path / 'fall', runs=[(s, tc, -d, c) for s, tc, d, c in runs], missing=[])))
+    assert fall['trend'] == 'fall' and fall['pTrend'] == pytest.approx(2 / 216, rel=1e-9)
+    # another quantity in its unit: the crushed grains are 0 everywhere, no evidence of any effect
+    crushed = blockedTest(StudyData(fabricate(tmp_path / 'q', runs=runs, missing=[])), 'nCrushed', '-')
+    assert crushed['quantity'] == 'nCrushed' and (crushed['chi2'], crushed['p'], crushed['residualStd [-]']) == (0.0, 1.0, 0.0)
     # a seed missing one value is not a block; with one complete seed left there is no test
     assert blockedTest(StudyData(fabricate(tmp_path / 'gap', runs=runs[:-1], missing=[])))['seeds'] == 2
     assert blockedTest(StudyData(fabricate(tmp_path / 'fig5', runs=RUNS, missing=MISSING))) is None

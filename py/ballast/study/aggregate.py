@@ -5,8 +5,9 @@
     stats.csv        one line per value of the studied parameter: number of runs, mean and standard
                      deviation (sample, n-1) of the displacement at peak force and of the other results
     test.json        does the parameter change the displacement at peak? Kruskal-Wallis across its
-                     values, with the difference of two means the runs could have detected, and under
-                     "blocked" the same question asked within each realization (Friedman, seeds as blocks)
+                     values, with the difference of two means the runs could have detected; under
+                     "blocked" the same question asked within each realization (Friedman, seeds as blocks;
+                     Page's trend test), under "onset" for the applied force at the first crush
     fd_curves.png    F-delta curves, one panel per value of the studied parameter, a line per seed (Fig. 4)
     delta_peak.png   displacement at peak force against the parameter: one grey line per realization,
                      mean +- standard deviation as error bars (paper, Fig. 5)
@@ -378,21 +379,24 @@ def effectTest(data, alpha=0.05, power=0.8):
             'pooledStd [m]': pooled, 'smallestGroup': n, 'detectableDifference [m]': float(z * pooled * np.sqrt(2 / n))}
 
 
-def blockedTest(data, alpha=0.05, power=0.8):
+def blockedTest(data, quantity=None, unit='m', alpha=0.05, power=0.8):
     """The effect test within realizations: a seed is one packing run at every value of the parameter,
-    so the seeds are blocks. Friedman's chi-square test across the values over the seeds that finished
-    at all of them (scipy.stats.friedmanchisquare; needs 3 values or more), and the difference of two
-    means it could have detected: as effectTest's, with the residual standard deviation of the two-way
-    layout (seed + value) in place of the pooled one, s_r = sqrt(sum r_ij^2 / ((b - 1)(k - 1))),
-    r_ij = y_ij - row mean - column mean + grand mean, and b seeds. None with fewer than 3 values or 2
-    complete seeds."""
+    so the seeds are blocks. For `quantity` (default the displacement at peak) over the seeds that have
+    it at every value: Friedman's chi-square test across the values (scipy.stats.friedmanchisquare),
+    and the difference of two means it could have detected: as effectTest's, with the residual
+    standard deviation of the two-way layout (seed + value) in place of the pooled one,
+    s_r = sqrt(sum r_ij^2 / ((b - 1)(k - 1))), r_ij = y_ij - row mean - column mean + grand mean, and
+    b seeds. For a numeric parameter also Page's test of a monotonic trend along it
+    (scipy.stats.page_trend_test, for a rise and for a fall; pTrend is twice the smaller p, the
+    two-sided p). None with fewer than 3 values or 2 complete seeds."""
     from scipy import stats
-    peak = {(r['seed'], r['value']): r['summary'][data.peak] for r in data.runs}
-    seeds = [s for s in data.seeds if all((s, v) in peak for v in data.values)]
+    quantity = quantity or data.peak
+    got = {(r['seed'], r['value']): r['summary'][quantity] for r in data.runs if r['summary'].get(quantity) is not None}
+    seeds = [s for s in data.seeds if all((s, v) in got for v in data.values)]
     k, b = len(data.values), len(seeds)
     if k < 3 or b < 2:
         return None
-    y = np.array([[peak[s, v] for v in data.values] for s in seeds])
+    y = np.array([[got[s, v] for v in data.values] for s in seeds], dtype=float)
     if np.all(y == y[0, 0]):
         chi2, p = 0.0, 1.0
     else:
@@ -400,8 +404,14 @@ def blockedTest(data, alpha=0.05, power=0.8):
     res = y - y.mean(axis=1, keepdims=True) - y.mean(axis=0, keepdims=True) + y.mean()
     sr = float(np.sqrt((res**2).sum() / ((b - 1) * (k - 1))))
     z = stats.norm.ppf(1 - alpha / 2) + stats.norm.ppf(power)
-    return {'test': 'Friedman', 'blocks': 'seed', 'seeds': b, 'values': k, 'chi2': float(chi2), 'p': float(p),
-            'residualStd [m]': sr, 'detectableDifference [m]': float(z * sr * np.sqrt(2 / b))}
+    out = {'test': 'Friedman', 'quantity': quantity, 'blocks': 'seed', 'seeds': b, 'values': k, 'chi2': float(chi2),
+           'p': float(p), 'residualStd [%s]' % unit: sr, 'detectableDifference [%s]' % unit: float(z * sr * np.sqrt(2 / b))}
+    if data.numeric:
+        rise = stats.page_trend_test(y)
+        fall = stats.page_trend_test(y, predicted_ranks=list(range(k, 0, -1)))
+        out.update(trend='rise' if rise.pvalue <= fall.pvalue else 'fall', pageL=float(max(rise.statistic, fall.statistic)),
+                   pTrend=float(min(1.0, 2 * min(rise.pvalue, fall.pvalue))))
+    return out
 
 
 def save(fig, ax, xlabel, ylabel, title, path):
@@ -445,16 +455,21 @@ def aggregate(path, param=None, outDir=None, xlog='auto', figures=True):
             st['forceAtFirstCrush_std'] / 1e3))
     test = effectTest(data)
     if test is not None:
-        blocked = blockedTest(data, test['alpha'], test['power'])
+        blocked = blockedTest(data, alpha=test['alpha'], power=test['power'])
+        onset = blockedTest(data, 'forceAtFirstCrush', 'N', test['alpha'], test['power'])
         with open(os.path.join(outDir, 'test.json'), 'w') as fh:
-            json.dump(dict(test, blocked=blocked), fh, indent=1)
+            json.dump(dict(test, blocked=blocked, onset=onset), fh, indent=1)
         print('Kruskal-Wallis across %s: H = %.3g, p = %.3g (%d groups, %d runs); a difference of two means of %.1f mm '
               'would have been found with probability %g at the %g level' % (
                   data.param, test['H'], test['p'], test['groups'], test['runs'], test['detectableDifference [m]'] * 1e3,
                   test['power'], test['alpha']))
         if blocked is not None:
-            print('Friedman across %s within seeds: chi2 = %.3g, p = %.3g (%d seeds complete); detectable difference %.1f mm' % (
-                data.param, blocked['chi2'], blocked['p'], blocked['seeds'], blocked['detectableDifference [m]'] * 1e3))
+            print('Friedman across %s within seeds: chi2 = %.3g, p = %.3g (%d seeds complete); detectable difference %.1f mm%s' % (
+                data.param, blocked['chi2'], blocked['p'], blocked['seeds'], blocked['detectableDifference [m]'] * 1e3,
+                '; Page trend: %s, p = %.3g' % (blocked['trend'], blocked['pTrend']) if 'trend' in blocked else ''))
+        if onset is not None:
+            print('applied force at the first crush, within seeds: Friedman p = %.3g (%d seeds)%s' % (
+                onset['p'], onset['seeds'], '; Page trend: %s, p = %.3g' % (onset['trend'], onset['pTrend']) if 'trend' in onset else ''))
     print('tables: %s, %s' % (runsCsv, statsCsv))
     if figures:
         print('figures: %s' % ', '.join(plots(data, outDir, xlog)))
