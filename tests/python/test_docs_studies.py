@@ -91,3 +91,11 @@ def test_variants_tables_are_the_records():
             assert value == pytest.approx(1e3 * float(r[key]), abs=0.051)
             assert sem == pytest.approx(1e3 * float(r[{'change': 'sem', 'baselineChange': 'baselineSem', 'effect': 'effectSem'}[key]]),
                                         abs=0.051)
+
+
+def test_fig4_table_is_the_records():
+    text = section('### Fig. 4 at the paper\'s size')
+    st = checkStatsRows(text, 'frequency', 'f', 6)
+    assert [int(numbers(c)[0]) for c in tableRow(text, 'runs recorded', 6)] == [int(r['n']) for r in st]
+    for cell, r in zip(tableRow(text, 'applied force at the first crush, mean [kN]', 6), st):
+        assert numbers(cell)[0] == pytest.approx(1e-3 * float(r['forceAtFirstCrush_mean [N]']), abs=0.51)
