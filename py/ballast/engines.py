@@ -268,7 +268,7 @@ class BallastCrushEngine(_BallastEngine):
         strength = ft
         if self.fatigue:  # docs/fatigue.md: a sample of s for every grain, crush when s > 1 - D
             F = self._fatigueRows(ids)
-            F[ids], crush = _ballast.fatigueCheck(se / ft, radii, F[ids], self.fatigueExponent, self.fatigueEndurance,
+            F[ids], crush = _ballast.fatigueCheck(ratio, radii, F[ids], self.fatigueExponent, self.fatigueEndurance,
                                                   self.fatigueHysteresis, self.rMin)
             strength = ft * (1 - F[ids, 0])
             d['maxDamage'] = float(np.max(F[ids, 0]))

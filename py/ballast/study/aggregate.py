@@ -312,8 +312,7 @@ def checksPlot(data, outDir, x, ticks, scale):
     # the runs of a value spread over +-0.15 of the spacing of the values (a factor on a log axis)
     step = (xs0[-1] / xs0[0]) ** (1 / max(len(xs0) - 1, 1)) if scale == 'log' else \
         (min(np.diff(xs0)) if len(xs0) > 1 else 1.0)
-    for ax, key, ylabel in ((axes[0], 'nCrushed', 'grains crushed in the run'),
-                            (axes[1], 'ratioAtCrushMax', r'largest $\sigma/f_t$ of a grain when it crushed')):
+    for ax, key in ((axes[0], 'nCrushed'), (axes[1], 'ratioAtCrushMax')):
         for v in data.values:
             ys = np.array([r['summary'][key] for r in runs if r['value'] == v and r['summary'].get(key) is not None], float)
             if not ys.size:
@@ -323,30 +322,26 @@ def checksPlot(data, outDir, x, ticks, scale):
             ax.plot(xs, ys, 'o', ms=3.5, color='0.45', alpha=0.8, zorder=2)
             ax.plot(x[v], ys.mean(), '_', ms=22, mew=2.5, color='C3', zorder=3)
         ax.plot([], [], 'o', ms=3.5, color='0.45', label='one run')
+    axes[1].axhline(1.0, color='k', lw=0.8, ls=':')
+    onset = {}  # value -> [(seed, applied force at the first crush [kN])]
+    for r in sorted(runs, key=lambda r: x[r['value']]):
+        if r['summary'].get('forceAtFirstCrush') is not None:
+            onset.setdefault(r['value'], []).append((r['seed'], r['summary']['forceAtFirstCrush'] / 1e3))
+    for seed in data.seeds:
+        line = [(x[v], F) for v, got in onset.items() for s, F in got if s == seed]
+        if line:
+            axes[2].plot(*zip(*line), '-o', ms=3, lw=0.8, color='0.6', zorder=2)
+    for v, got in onset.items():
+        axes[2].plot(x[v], np.mean([F for _, F in got]), '_', ms=22, mew=2.5, color='C3', zorder=3)
+    axes[2].plot([], [], '-o', ms=3, lw=0.8, color='0.6', label='one seed')
+    for ax, ylabel in zip(axes, ('grains crushed in the run', r'largest $\sigma/f_t$ of a grain when it crushed',
+                                 'applied force at the first crush [kN]')):
         ax.plot([], [], '_', ms=14, mew=2.5, color='C3', label='mean')
         paramAxis(ax, data.values, x, ticks, scale)
         ax.set_xlabel(LABELS.get(data.param, data.param))
         ax.set_ylabel(ylabel)
         ax.grid(alpha=0.3)
         ax.legend(fontsize=8)
-    axes[1].axhline(1.0, color='k', lw=0.8, ls=':')
-    onset = axes[2]
-    for seed in data.seeds:
-        mine = sorted((r for r in runs if r['seed'] == seed and r['summary'].get('forceAtFirstCrush') is not None),
-                      key=lambda r: x[r['value']])
-        if mine:
-            onset.plot([x[r['value']] for r in mine], [r['summary']['forceAtFirstCrush'] / 1e3 for r in mine], '-o', ms=3,
-                       lw=0.8, color='0.6', zorder=2)
-    means = [(v, np.mean(f)) for v in data.values for f in [[r['summary']['forceAtFirstCrush'] / 1e3 for r in runs
-             if r['value'] == v and r['summary'].get('forceAtFirstCrush') is not None]] if f]
-    onset.plot([x[v] for v, _ in means], [m for _, m in means], '_', ms=22, mew=2.5, color='C3', zorder=3)
-    onset.plot([], [], '-o', ms=3, lw=0.8, color='0.6', label='one seed')
-    onset.plot([], [], '_', ms=14, mew=2.5, color='C3', label='mean')
-    paramAxis(onset, data.values, x, ticks, scale)
-    onset.set_xlabel(LABELS.get(data.param, data.param))
-    onset.set_ylabel('applied force at the first crush [kN]')
-    onset.grid(alpha=0.3)
-    onset.legend(fontsize=8)
     fig.suptitle('%s: the per-check log of %s' % (os.path.basename(data.dir), count(len(runs), 'run')), fontsize=10)
     fig.tight_layout()
     path = os.path.join(outDir, 'checks.png')
@@ -436,8 +431,8 @@ def aggregate(path, param=None, outDir=None, xlog='auto', figures=True):
     data = StudyData(path, param)
     os.makedirs(outDir, exist_ok=True)
     runsCsv, statsCsv = writeCsv(data, outDir)
-    print('%s: %d finished %s of %d rows; studied parameter %s (%s), %s' % (
-        data.dir, len(data.runs), 'run' if len(data.runs) == 1 else 'runs', len(data.info['rows']), data.param,
+    print('%s: %s of %d rows; studied parameter %s (%s), %s' % (
+        data.dir, count(len(data.runs), 'finished run'), len(data.info['rows']), data.param,
         count(len(data.values), 'value'), count(len(data.seeds), 'realization')))
     shas = data.codeVersions()
     if len(shas) > 1:
