@@ -2,7 +2,7 @@
 import numpy as np
 import pytest
 
-from ballast.oedometer.loadcurve import eq8, loadCurve
+from ballast.oedometer.loadcurve import eq8, halfLoadTime, loadCurve
 
 FMAX, F = 2e4, 50.0   # [N], [Hz]
 
@@ -13,6 +13,7 @@ def test_eq8_by_hand():
     assert eq8(FMAX, F, T / 4) == pytest.approx(FMAX / 2, rel=1e-12)
     assert eq8(FMAX, F, T / 2) == pytest.approx(FMAX, rel=1e-12)
     assert eq8(FMAX, F, 3 * T / 4) == pytest.approx(FMAX / 2, rel=1e-12)
+    assert halfLoadTime(F) == pytest.approx(T / 4, rel=1e-15)  # where the first rise passes Fmax/2
     t = np.linspace(0, T, 7)
     np.testing.assert_allclose(eq8(FMAX, F, t), [eq8(FMAX, F, float(x)) for x in t], rtol=1e-14, atol=1e-9)
 

@@ -8,7 +8,7 @@ import os
 
 import pytest
 
-from ballast.study.aggregate import StudyData, aggregate, axisPositions, blockedTest, effectTest, writeCsv
+from ballast.study.aggregate import StudyData, aggregate, axisPositions, blockedTest, effectTest, halfLoadRatio, writeCsv
 from ballast.study.options import StudyError
 
 # (seed, Tc [s], delta at peak [m], crushed); seed 3 at Tc = 0.01 and seeds 2-3 at 0.04 did not finish
@@ -181,6 +181,13 @@ def test_friedman_within_seeds_by_hand(tmp_path):
     # a seed missing one value is not a block; with one complete seed left there is no test
     assert blockedTest(StudyData(fabricate(tmp_path / 'gap', runs=runs[:-1], missing=[])))['seeds'] == 2
     assert blockedTest(StudyData(fabricate(tmp_path / 'fig5', runs=RUNS, missing=MISSING))) is None
+    # a value where no run has the quantity is left out (the others keep their test): deltaMax = 2 delta
+    data = StudyData(fabricate(tmp_path / 'part', runs=runs + [(s, 0.1, 0.5, 0) for s in (1, 2, 3)], missing=[]))
+    for r in data.runs:
+        if r['value'] == 0.1:
+            del r['summary']['deltaMax']
+    part = blockedTest(data, 'deltaMax')
+    assert part['valuesTested'] == [0.0, 0.01, 0.04] and part['seeds'] == 3 and part['chi2'] == pytest.approx(6.0, rel=1e-12)
     # two values only: Friedman needs three
     two = [r for r in runs if r[1] != 0.04]
     assert blockedTest(StudyData(fabricate(tmp_path / 'two', runs=two, missing=[]))) is None
@@ -210,6 +217,41 @@ def test_applied_force_at_the_first_crush(tmp_path):
     with open(os.path.join(bare, 'runs', run, 'crushes.csv'), 'w') as fh:
         fh.write('t,radius,ratio\n0.1,0.02,1.2\n')
     assert {r['runId']: r['summary'] for r in StudyData(bare).runs}[run]['forceAtFirstCrush'] is None
+
+
+def test_stress_ratio_at_half_the_peak_load(tmp_path):
+    # eq. 8 at f = 2 Hz, Fmax = 1.5 MN passes 750 kN at t = 1/(4f) = 0.125 s; at 0.125 +- d it carries
+    # 750 (1 +- sin(4 pi d)) kN. Checks at 0.121 and 0.128 s (712.3 and 778.3 kN, 66 kN apart: within
+    # 5 % of Fmax) with ratios growing in proportion to the load, F/Fmax, give exactly 0.5 when
+    # interpolated in force (0.500002 in time)
+    F = lambda t: 750e3 * (1 - math.cos(4 * math.pi * t))
+    log = {'t': [0.121, 0.128], 'maxStressRatio': [F(0.121) / 1.5e6, F(0.128) / 1.5e6]}
+    assert halfLoadRatio(log, 1.5e6, 0.0, 2.0, math.inf) == pytest.approx(0.5, rel=1e-12)
+    # 0.122 and 0.128 s lie symmetric about 0.125 s in force (721.7 and 778.3 kN): the mean of 0.4 and 0.8
+    log = {'t': [0.05, 0.122, 0.128, 0.3], 'maxStressRatio': [0.1, 0.4, 0.8, 1.2]}
+    assert halfLoadRatio(log, 1.5e6, 0.0, 2.0, 0.3) == pytest.approx(0.6, rel=1e-12)
+    assert halfLoadRatio(log, 1.5e6, 0.0, 2.0, 0.128) == pytest.approx(0.6, rel=1e-12)  # crushed at the later check
+    assert halfLoadRatio(log, 1.5e6, 2e5, 2.0, 0.3) == pytest.approx(0.6, rel=1e-12)  # Fmin only shapes the cycles after
+    assert halfLoadRatio(log, 1.5e6, 0.0, 2.0, 0.122) is None  # a grain crushed before: no longer the intact network
+    assert halfLoadRatio({'t': [0.125], 'maxStressRatio': [0.7]}, 1.5e6, 0.0, 2.0, math.inf) == 0.7  # a check at 0.125 s
+    assert halfLoadRatio({'t': [0.2, 0.3], 'maxStressRatio': [0.7, 0.9]}, 1.5e6, 0.0, 2.0, math.inf) is None  # none before
+    assert halfLoadRatio({'t': [0.05, 0.1], 'maxStressRatio': [0.1, 0.4]}, 1.5e6, 0.0, 2.0, math.inf) is None  # none after
+    # checks at 0.1 and 0.15 s are 463 kN apart, 31 % of Fmax: too far to interpolate
+    assert halfLoadRatio({'t': [0.1, 0.15], 'maxStressRatio': [0.4, 0.8]}, 1.5e6, 0.0, 2.0, math.inf) is None
+    # through StudyData: a run's log and crushes give it; a run without its loading parameters has none
+    d = fabricate(tmp_path / 's', more={'f': lambda i: 2.0, 'Fmax': lambda i: 1.5e6})
+    run = sorted(os.listdir(os.path.join(d, 'runs')))[0]
+    with open(os.path.join(d, 'runs', run, 'checks.csv'), 'w') as fh:
+        fh.write('t,iter,nCrushed,maxStressRatio\n0.122,10,0,0.4\n0.128,15,0,0.8\n0.3,30,1,1.2\n')
+    with open(os.path.join(d, 'runs', run, 'crushes.csv'), 'w') as fh:
+        fh.write('t,radius,ratio\n0.3,0.02,1.2\n')
+    assert {r['runId']: r['summary'] for r in StudyData(d, param='Tc').runs}[run]['stressRatioAtHalfLoad'] == \
+        pytest.approx(0.6, rel=1e-12)
+    bare = fabricate(tmp_path / 'bare')
+    run = sorted(os.listdir(os.path.join(bare, 'runs')))[0]
+    with open(os.path.join(bare, 'runs', run, 'checks.csv'), 'w') as fh:
+        fh.write('t,iter,nCrushed,maxStressRatio\n0.122,10,0,0.4\n0.128,15,0,0.8\n')
+    assert {r['runId']: r['summary'] for r in StudyData(bare).runs}[run]['stressRatioAtHalfLoad'] is None
 
 
 def test_runs_csv_carries_every_parameter_of_every_run(tmp_path):

@@ -97,12 +97,19 @@ def test_a_record_is_small_and_keeps_what_the_figures_and_tables_need(tmp_path):
     every = np.arange(1000)
     exact = np.maximum.accumulate(0.8 + 0.6 * np.sin(np.pi * every / 1000))
     fromRecord = ratio[np.searchsorted(t, 1e-3 * every + 1e-12, side='right') - 1]
-    assert np.max(np.abs(fromRecord - exact)) < 0.6 / 100 and len(checks) <= 400
+    # (at most 400 rows, and the check at half the peak load on top)
+    assert np.max(np.abs(fromRecord - exact)) < 0.6 / 100 and len(checks) <= 400 + 1
     with open(os.path.join(dest, 'record.json')) as fh:
         info = json.load(fh)
     assert info['fdRows'] == {'run': 20000, 'record': len(rows)}
     assert info['checks'] == {'run': 1000, 'record': len(checks), 'crushing': 2, 'maxStressRatio': pytest.approx(1.4)}
     assert len(thinChecks({'nCrushed': np.ones(1000), 'maxStressRatio': np.ones(1000)})) == 400  # crushes at every check
+    # f = 2 Hz: the check at half the peak load, t = 1/(4f) = 0.125 s, is kept (what halfLoadRatio reads)
+    assert '12500' in [r['iter'] for r in checks]
+    # a flat log keeps its ends and the two checks around a time between checks
+    flat = {'t': 1e-3 * np.arange(1000), 'nCrushed': np.zeros(1000), 'maxStressRatio': np.ones(1000)}
+    assert list(thinChecks(flat, times=[0.1255])) == [0, 125, 126, 999]
+    assert list(thinChecks(flat, times=[2.0])) == [0, 999]  # after the last check: nothing more
     # the crushes with the ratio each crushed at, from events.csv (the abrasion left out)
     with open(os.path.join(dest, 'crushes.csv'), newline='') as fh:
         crushes = list(csv.DictReader(fh))

@@ -12,6 +12,11 @@ def eq8(Fmax, f, t):
     return Fmax / 2 * (math.sin(2 * math.pi * f * t - math.pi / 2) + 1)
 
 
+def halfLoadTime(f):
+    """The loading time [s] at which eq. 8 first passes Fmax/2: a quarter of the period, 1/(4f)."""
+    return 0.25 / f
+
+
 def loadCurve(Fmax, Fmin, f, t):
     """The load [N] at loading time t [s]: eq. 8 up to its peak at T/2 = 1/(2f), then cycles between Fmax
     and Fmin, Fmin + (Fmax - Fmin)/2 [1 + cos(2 pi f (t - T/2))]; with Fmin = 0 it is eq. 8 at every t."""

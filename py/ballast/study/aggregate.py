@@ -7,7 +7,8 @@
     test.json        does the parameter change the displacement at peak? Kruskal-Wallis across its
                      values, with the difference of two means the runs could have detected; under
                      "blocked" the same question asked within each realization (Friedman, seeds as blocks;
-                     Page's trend test), under "onset" for the applied force at the first crush
+                     Page's trend test), under "onset" for the applied force at the first crush, under
+                     "network" for the largest sigma/f_t at half the peak load before any crush
     fd_curves.png    F-delta curves, one panel per value of the studied parameter, a line per seed (Fig. 4)
     delta_peak.png   displacement at peak force against the parameter: one grey line per realization,
                      mean +- standard deviation as error bars (paper, Fig. 5)
@@ -21,7 +22,7 @@ import os
 
 import numpy as np
 
-from ..oedometer.loadcurve import loadCurve
+from ..oedometer.loadcurve import halfLoadTime, loadCurve
 from ..oedometer.parameters import PARAMS
 from .files import readSummary
 from .options import StudyError
@@ -34,9 +35,10 @@ RESULTS = [('peakForce', 'N'), ('deltaAtPeak', 'm'), ('deltaAtAppliedPeak', 'm')
            ('nAbraded', '-'), ('volumeLost', 'm^3'), ('massLost', 'kg'), ('massInitial', 'kg'), ('nGrainsInitial', '-'),
            ('porosity0', '-'), ('wallSeconds', 's'), ('cpuSeconds', 's'), ('steps', '-'),
            ('crushingChecks', '-'), ('crushesPerCrushingCheck', '-'), ('ratioAtCrushMax', '-'), ('ratioAtCrushMean', '-'),
-           ('forceAtFirstCrush', 'N')]
+           ('forceAtFirstCrush', 'N'), ('stressRatioAtHalfLoad', '-')]
 STATS = ['deltaAtPeak', 'deltaAtAppliedPeak', 'deltaMax', 'peakForce', 'nCrushed', 'nAbraded', 'massLost', 'Bg', 'Br',
-         'BBI', 'crushingChecks', 'crushesPerCrushingCheck', 'ratioAtCrushMax', 'forceAtFirstCrush', 'wallSeconds', 'cpuSeconds']
+         'BBI', 'crushingChecks', 'crushesPerCrushingCheck', 'ratioAtCrushMax', 'forceAtFirstCrush', 'stressRatioAtHalfLoad',
+         'wallSeconds', 'cpuSeconds']
 LABELS = {'f': 'loading frequency f [Hz]', 'Tc': 'crushing period $T_c$ [s]', 'rMin': '$r_{min}$ [m]', 'ft0': '$f_{t0}$ [Pa m]',
           'gamma': r'reduction factor $\gamma$ [-]', 'pattern': 'replacement pattern'}
 
@@ -69,8 +71,9 @@ def meanStd(xs):
     return mean, float(np.std(xs, ddof=1)) if len(xs) > 1 else float('nan')
 
 
+HALF_LOAD_GAP = 0.05  # [-] the widest gap in applied force, over Fmax, halfLoadRatio interpolates across
 CHECK_STATS = ('crushingChecks', 'crushesPerCrushingCheck', 'ratioAtCrushMax', 'ratioAtCrushMean',
-               'forceAtFirstCrush')  # checkStats' keys
+               'forceAtFirstCrush', 'stressRatioAtHalfLoad')  # checkStats' keys
 
 
 def checkStats(runDir, params=None):
@@ -79,8 +82,8 @@ def checkStats(runDir, params=None):
     crushes.csv) the largest and the mean sigma/f_t of the grains when they crushed (how far above their
     strength rare checks find grains; the log's maxStressRatio also counts fragments below r_min, which
     never crush); with the run's parameters (f, Fmax, Fmin) the applied force when the first grain
-    crushed (the onset: quasi-static loading gives a seed the same onset at every frequency). {} without
-    a log."""
+    crushed (the onset: quasi-static loading gives a seed the same onset at every frequency), and
+    stressRatioAtHalfLoad (halfLoadRatio). {} without a log."""
     try:
         c = np.atleast_1d(np.genfromtxt(os.path.join(runDir, 'checks.csv'), delimiter=',', names=True))
     except (OSError, ValueError):
@@ -93,12 +96,38 @@ def checkStats(runDir, params=None):
     out.update(crushingChecks=n, crushesPerCrushingCheck=float(np.mean(hit['nCrushed'])) if n else None)
     crushes = crushTable(runDir)
     ratios = crushes[2] if crushes is not None else np.array([])
+    loading = params and all(k in params for k in ('f', 'Fmax'))
+    if loading:
+        load = (float(params['Fmax']), float(params.get('Fmin', 0.0)), float(params['f']))
+        out['stressRatioAtHalfLoad'] = halfLoadRatio(c, *load, firstCrush=float(np.min(crushes[0])) if ratios.size else math.inf)
     if ratios.size:
         out.update(ratioAtCrushMax=float(np.max(ratios)), ratioAtCrushMean=float(np.mean(ratios)))
-        if params and all(k in params for k in ('f', 'Fmax')):
-            out['forceAtFirstCrush'] = loadCurve(float(params['Fmax']), float(params.get('Fmin', 0.0)), float(params['f']),
-                                                 float(np.min(crushes[0])))
+        if loading:
+            out['forceAtFirstCrush'] = loadCurve(*load, float(np.min(crushes[0])))
     return out
+
+
+def halfLoadRatio(checks, Fmax, Fmin, f, firstCrush):
+    """The largest sigma/f_t of a grain when the applied force first passes Fmax/2 (eq. 8: at t = 1/(4f)),
+    from the per-check log `checks` (columns t, maxStressRatio), interpolated in the applied force between
+    the checks on either side. Before any crush it measures the force network alone: how unevenly the
+    sample carries the same load (a record keeps both checks, records.thinChecks). None if a grain
+    crushed before the later of the two checks, if the log has no check on one side, or if the two are
+    more than HALF_LOAD_GAP Fmax apart: the ratio grows less than in proportion to the load, and a long
+    chord falls short of it (by 0.02-0.07 with checks 0.01-0.04 s apart at 4 Hz)."""
+    t = np.asarray(checks['t'], dtype=float)
+    half = halfLoadTime(f)
+    before, after = np.flatnonzero(t <= half), np.flatnonzero(t >= half)
+    if not before.size or not after.size or firstCrush < t[after[0]]:
+        return None
+    i, j = before[-1], after[0]
+    r = np.asarray(checks['maxStressRatio'], dtype=float)
+    if i == j:
+        return float(r[i])
+    Fi, Fj = loadCurve(Fmax, Fmin, f, t[[i, j]])
+    if Fj - Fi > HALF_LOAD_GAP * Fmax:
+        return None
+    return float(r[i] + (r[j] - r[i]) * (Fmax / 2 - Fi) / (Fj - Fi))
 
 
 class StudyData:
@@ -301,13 +330,14 @@ def plots(data, outDir, xlog='auto'):
 def checksPlot(data, outDir, x, ticks, scale):
     """checks.png: from the per-check logs, per value of the parameter, the grains crushed per run and the
     largest sigma/f_t of a grain when it crushed (how far above their strength rare checks find grains),
-    a point per run, the mean as a bar; and the applied force at the first crush, a line per seed (a
-    quasi-static onset is flat along it). None if no run has a log."""
+    a point per run, the mean as a bar; the applied force at the first crush and the largest sigma/f_t at
+    half the peak load before any crush (halfLoadRatio), a line per seed (a quasi-static onset and force
+    network are flat along it). None if no run has a log."""
     import matplotlib.pyplot as plt
     runs = [r for r in data.runs if r['summary'].get('crushingChecks') is not None]
     if not runs:
         return None
-    fig, axes = plt.subplots(1, 3, figsize=(16, 4.3))
+    fig, axes = plt.subplots(1, 4, figsize=(20, 4.3))
     xs0 = sorted(x.values())
     # the runs of a value spread over +-0.15 of the spacing of the values (a factor on a log axis)
     step = (xs0[-1] / xs0[0]) ** (1 / max(len(xs0) - 1, 1)) if scale == 'log' else \
@@ -323,19 +353,20 @@ def checksPlot(data, outDir, x, ticks, scale):
             ax.plot(x[v], ys.mean(), '_', ms=22, mew=2.5, color='C3', zorder=3)
         ax.plot([], [], 'o', ms=3.5, color='0.45', label='one run')
     axes[1].axhline(1.0, color='k', lw=0.8, ls=':')
-    onset = {}  # value -> [(seed, applied force at the first crush [kN])]
-    for r in sorted(runs, key=lambda r: x[r['value']]):
-        if r['summary'].get('forceAtFirstCrush') is not None:
-            onset.setdefault(r['value'], []).append((r['seed'], r['summary']['forceAtFirstCrush'] / 1e3))
-    for seed in data.seeds:
-        line = [(x[v], F) for v, got in onset.items() for s, F in got if s == seed]
-        if line:
-            axes[2].plot(*zip(*line), '-o', ms=3, lw=0.8, color='0.6', zorder=2)
-    for v, got in onset.items():
-        axes[2].plot(x[v], np.mean([F for _, F in got]), '_', ms=22, mew=2.5, color='C3', zorder=3)
-    axes[2].plot([], [], '-o', ms=3, lw=0.8, color='0.6', label='one seed')
+    for ax, key, scale1 in ((axes[2], 'forceAtFirstCrush', 1e-3), (axes[3], 'stressRatioAtHalfLoad', 1.0)):
+        got = [(r['seed'], r['value'], r['summary'][key] * scale1) for r in runs if r['summary'].get(key) is not None]
+        for seed in data.seeds:
+            line = sorted((x[v], y) for s, v, y in got if s == seed)
+            if line:
+                ax.plot(*zip(*line), '-o', ms=3, lw=0.8, color='0.6', zorder=2)
+        for v in data.values:
+            ys = [y for _, w, y in got if w == v]
+            if ys:
+                ax.plot(x[v], np.mean(ys), '_', ms=22, mew=2.5, color='C3', zorder=3)
+        ax.plot([], [], '-o', ms=3, lw=0.8, color='0.6', label='one seed')
     for ax, ylabel in zip(axes, ('grains crushed in the run', r'largest $\sigma/f_t$ of a grain when it crushed',
-                                 'applied force at the first crush [kN]')):
+                                 'applied force at the first crush [kN]',
+                                 r'largest $\sigma/f_t$ at $F = F_{max}/2$, no grain crushed yet')):
         ax.plot([], [], '_', ms=14, mew=2.5, color='C3', label='mean')
         paramAxis(ax, data.values, x, ticks, scale)
         ax.set_xlabel(LABELS.get(data.param, data.param))
@@ -376,8 +407,8 @@ def effectTest(data, alpha=0.05, power=0.8):
 
 def blockedTest(data, quantity=None, unit='m', alpha=0.05, power=0.8):
     """The effect test within realizations: a seed is one packing run at every value of the parameter,
-    so the seeds are blocks. For `quantity` (default the displacement at peak) over the seeds that have
-    it at every value: Friedman's chi-square test across the values (scipy.stats.friedmanchisquare),
+    so the seeds are blocks. For `quantity` (default the displacement at peak), over the values where a
+    run has it and the seeds that have it at all of them: Friedman's chi-square test across the values (scipy.stats.friedmanchisquare),
     and the difference of two means it could have detected: as effectTest's, with the residual
     standard deviation of the two-way layout (seed + value) in place of the pooled one,
     s_r = sqrt(sum r_ij^2 / ((b - 1)(k - 1))), r_ij = y_ij - row mean - column mean + grand mean, and
@@ -387,11 +418,12 @@ def blockedTest(data, quantity=None, unit='m', alpha=0.05, power=0.8):
     from scipy import stats
     quantity = quantity or data.peak
     got = {(r['seed'], r['value']): r['summary'][quantity] for r in data.runs if r['summary'].get(quantity) is not None}
-    seeds = [s for s in data.seeds if all((s, v) in got for v in data.values)]
-    k, b = len(data.values), len(seeds)
+    values = [v for v in data.values if any(w == v for _, w in got)]
+    seeds = [s for s in data.seeds if all((s, v) in got for v in values)]
+    k, b = len(values), len(seeds)
     if k < 3 or b < 2:
         return None
-    y = np.array([[got[s, v] for v in data.values] for s in seeds], dtype=float)
+    y = np.array([[got[s, v] for v in values] for s in seeds], dtype=float)
     if np.all(y == y[0, 0]):
         chi2, p = 0.0, 1.0
     else:
@@ -399,8 +431,8 @@ def blockedTest(data, quantity=None, unit='m', alpha=0.05, power=0.8):
     res = y - y.mean(axis=1, keepdims=True) - y.mean(axis=0, keepdims=True) + y.mean()
     sr = float(np.sqrt((res**2).sum() / ((b - 1) * (k - 1))))
     z = stats.norm.ppf(1 - alpha / 2) + stats.norm.ppf(power)
-    out = {'test': 'Friedman', 'quantity': quantity, 'blocks': 'seed', 'seeds': b, 'values': k, 'chi2': float(chi2),
-           'p': float(p), 'residualStd [%s]' % unit: sr, 'detectableDifference [%s]' % unit: float(z * sr * np.sqrt(2 / b))}
+    out = {'test': 'Friedman', 'quantity': quantity, 'blocks': 'seed', 'seeds': b, 'values': k, 'valuesTested': values,
+           'chi2': float(chi2), 'p': float(p), 'residualStd [%s]' % unit: sr, 'detectableDifference [%s]' % unit: float(z * sr * np.sqrt(2 / b))}
     if data.numeric:
         rise = stats.page_trend_test(y)
         fall = stats.page_trend_test(y, predicted_ranks=list(range(k, 0, -1)))
@@ -452,8 +484,9 @@ def aggregate(path, param=None, outDir=None, xlog='auto', figures=True):
     if test is not None:
         blocked = blockedTest(data, alpha=test['alpha'], power=test['power'])
         onset = blockedTest(data, 'forceAtFirstCrush', 'N', test['alpha'], test['power'])
+        network = blockedTest(data, 'stressRatioAtHalfLoad', '-', test['alpha'], test['power'])
         with open(os.path.join(outDir, 'test.json'), 'w') as fh:
-            json.dump(dict(test, blocked=blocked, onset=onset), fh, indent=1)
+            json.dump(dict(test, blocked=blocked, onset=onset, network=network), fh, indent=1)
         print('Kruskal-Wallis across %s: H = %.3g, p = %.3g (%d groups, %d runs); a difference of two means of %.1f mm '
               'would have been found with probability %g at the %g level' % (
                   data.param, test['H'], test['p'], test['groups'], test['runs'], test['detectableDifference [m]'] * 1e3,
@@ -462,9 +495,10 @@ def aggregate(path, param=None, outDir=None, xlog='auto', figures=True):
             print('Friedman across %s within seeds: chi2 = %.3g, p = %.3g (%d seeds complete); detectable difference %.1f mm%s' % (
                 data.param, blocked['chi2'], blocked['p'], blocked['seeds'], blocked['detectableDifference [m]'] * 1e3,
                 '; Page trend: %s, p = %.3g' % (blocked['trend'], blocked['pTrend']) if 'trend' in blocked else ''))
-        if onset is not None:
-            print('applied force at the first crush, within seeds: Friedman p = %.3g (%d seeds)%s' % (
-                onset['p'], onset['seeds'], '; Page trend: %s, p = %.3g' % (onset['trend'], onset['pTrend']) if 'trend' in onset else ''))
+        for what, t in (('applied force at the first crush', onset), ('largest sigma/f_t at Fmax/2 before a crush', network)):
+            if t is not None:
+                print('%s, within seeds: Friedman p = %.3g (%d seeds)%s' % (
+                    what, t['p'], t['seeds'], '; Page trend: %s, p = %.3g' % (t['trend'], t['pTrend']) if 'trend' in t else ''))
     print('tables: %s, %s' % (runsCsv, statsCsv))
     if figures:
         print('figures: %s' % ', '.join(plots(data, outDir, xlog)))

@@ -11,7 +11,8 @@ the full one:
         row.json            the runner's row.json (table row, code sha1, host, command, duration)
         fd.csv              fd.csv thinned to at most MAX_FD_ROWS rows (:func:`thinCurve`), same columns
         checks.csv          the per-check log thinned (:func:`thinChecks`): every check where a grain
-                            crushed, and the largest stress ratio to 1/200 of its range
+                            crushed, the two around half the peak load (t = 1/(4f)) and the largest
+                            stress ratio to 1/200 of its range
         crushes.csv         per crush (events.csv): t [s], the grain's radius [m] and its ratio, the
                             criterion's stress over the strength it crushed at [-]
         record.json         what was left out: rows of fd.csv and checks.csv, the largest stress ratio
@@ -31,6 +32,7 @@ import uuid
 
 import numpy as np
 
+from ..oedometer.loadcurve import halfLoadTime
 from .files import moveSynced, readSummary, writeAtomic
 
 MAX_FD_ROWS = 600          # rows of a recorded F-delta curve [-]: ~40 kB, enough for the paper's figures
@@ -90,11 +92,18 @@ def thinFd(columns, maxRows=MAX_FD_ROWS):
     return thinCurve(columns, [q for q in FD_QUANTITIES if q in columns], forced, maxRows)
 
 
-def thinChecks(columns, maxRows=MAX_CHECK_ROWS):
-    """thinCurve of the per-check log (checks.csv): every check where a grain crushed and the largest
-    stress ratios to 1/200 of their range (what the ft0 of another criterion is read from)."""
+def thinChecks(columns, maxRows=MAX_CHECK_ROWS, times=()):
+    """thinCurve of the per-check log (checks.csv): every check where a grain crushed, the checks on
+    either side of each of `times` [s] (what a value at that time is interpolated from; beyond maxRows)
+    and the largest stress ratios to 1/200 of their range (what the ft0 of another criterion is read
+    from)."""
+    around = []
+    for x in times:
+        t = np.asarray(columns['t'], dtype=float)
+        around += [i for i in (np.searchsorted(t, x, 'right') - 1, np.searchsorted(t, x, 'left')) if 0 <= i < len(t)]
+    around = sorted(set(around))  # the rows around `times` come on top of maxRows: they do not coarsen the rest
     return thinCurve(columns, [q for q in ('maxStressRatio', 'maxCrushableRatio') if q in columns],
-                     np.flatnonzero(np.asarray(columns['nCrushed']) > 0), maxRows)
+                     list(np.flatnonzero(np.asarray(columns['nCrushed']) > 0)) + around, maxRows + len(around))
 
 
 def readCsv(path):
@@ -155,7 +164,8 @@ def keepRecord(runDir, records, runId):
     if os.path.isfile(checks):
         header, rows = readCsv(checks)
         cols = {h: np.array([float(r[k]) for r in rows]) for k, h in enumerate(header)}
-        kept = thinChecks(cols) if rows else []
+        f = (summary.get('params') or {}).get('f')
+        kept = thinChecks(cols, times=[halfLoadTime(float(f))] if f else ()) if rows else []
         writeAtomic(os.path.join(tmp, 'checks.csv'), csvText(header, [rows[i] for i in kept]))
         info['checks'] = {'run': len(rows), 'record': int(len(kept)), 'crushing': int(np.sum(cols['nCrushed'] > 0)) if rows else 0,
                           'maxStressRatio': float(np.max(cols['maxStressRatio'])) if rows else None}
