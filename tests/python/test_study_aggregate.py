@@ -206,9 +206,10 @@ def test_applied_force_at_the_first_crush(tmp_path):
         with open(os.path.join(d, 'runs', run, 'checks.csv'), 'w') as fh:
             fh.write('t,iter,nCrushed,maxStressRatio\n0.1,10,2,1.2\n')
         with open(os.path.join(d, 'runs', run, 'crushes.csv'), 'w') as fh:
-            fh.write('t,radius,ratio\n0.2,0.02,1.1\n%r,0.02,1.2\n' % (1 / 12))
+            fh.write('t,radius,ratio\n0.2,0.02,1.1\n%r,0.02,1.2\n0.3,0.01,1.1\n' % (1 / 12))
     s = {r['runId']: r['summary'] for r in StudyData(d, param='Tc').runs}
     assert s[runs[0]]['forceAtFirstCrush'] == pytest.approx(375e3, rel=1e-12)
+    assert s[runs[0]]['crushesAfterPeak'] == 1  # the applied peak is at 1/(2f) = 0.25 s: the crush at 0.3 s
     assert 'forceAtFirstCrush' not in s[runs[2]]  # no log
     bare = fabricate(tmp_path / 'bare')
     run = sorted(os.listdir(os.path.join(bare, 'runs')))[0]

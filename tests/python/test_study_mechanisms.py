@@ -43,7 +43,7 @@ def test_means_and_trends_by_hand(tmp_path):
     # 30, 20 mm); the sequential variant has seeds 1 and 2 only, +1 and -1 mm
     base = [({}, s, tc, d, 10) for s, ds in ((1, (0.060, 0.040)), (2, (0.050, 0.030)), (3, (0.040, 0.020)))
             for tc, d in zip((0.0, 0.01), ds)]
-    seq = [({'maxPerCheck': 1}, 1, 0.0, 0.030, 5), ({'maxPerCheck': 1}, 1, 0.01, 0.031, 5),
+    seq = [({'maxPerCheck': 1}, 1, 0.0, 0.030, 5), ({'maxPerCheck': 1}, 1, 0.01, 0.031, 4),
            ({'maxPerCheck': 1}, 2, 0.0, 0.025, 4), ({'maxPerCheck': 1}, 2, 0.01, 0.024, 4)]
     rows = collect(fabricate(tmp_path / 'base', base), fabricate(tmp_path / 'var', seq))
     st = {(r['variant'], r['Tc']): r for r in table(rows)}

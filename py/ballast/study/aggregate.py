@@ -35,7 +35,7 @@ RESULTS = [('peakForce', 'N'), ('deltaAtPeak', 'm'), ('deltaAtAppliedPeak', 'm')
            ('nAbraded', '-'), ('volumeLost', 'm^3'), ('massLost', 'kg'), ('massInitial', 'kg'), ('nGrainsInitial', '-'),
            ('porosity0', '-'), ('wallSeconds', 's'), ('cpuSeconds', 's'), ('steps', '-'),
            ('crushingChecks', '-'), ('crushesPerCrushingCheck', '-'), ('ratioAtCrushMax', '-'), ('ratioAtCrushMean', '-'),
-           ('forceAtFirstCrush', 'N'), ('stressRatioAtHalfLoad', '-')]
+           ('forceAtFirstCrush', 'N'), ('stressRatioAtHalfLoad', '-'), ('crushesAfterPeak', '-')]
 STATS = ['deltaAtPeak', 'deltaAtAppliedPeak', 'deltaMax', 'peakForce', 'nCrushed', 'nAbraded', 'massLost', 'Bg', 'Br',
          'BBI', 'crushingChecks', 'crushesPerCrushingCheck', 'ratioAtCrushMax', 'forceAtFirstCrush', 'stressRatioAtHalfLoad',
          'wallSeconds', 'cpuSeconds']
@@ -73,7 +73,7 @@ def meanStd(xs):
 
 HALF_LOAD_GAP = 0.05  # [-] the widest gap in applied force, over Fmax, halfLoadRatio interpolates across
 CHECK_STATS = ('crushingChecks', 'crushesPerCrushingCheck', 'ratioAtCrushMax', 'ratioAtCrushMean',
-               'forceAtFirstCrush', 'stressRatioAtHalfLoad')  # checkStats' keys
+               'forceAtFirstCrush', 'stressRatioAtHalfLoad', 'crushesAfterPeak')  # checkStats' keys
 
 
 def checkStats(runDir, params=None):
@@ -82,7 +82,8 @@ def checkStats(runDir, params=None):
     crushes.csv) the largest and the mean sigma/f_t of the grains when they crushed (how far above their
     strength rare checks find grains; the log's maxStressRatio also counts fragments below r_min, which
     never crush); with the run's parameters (f, Fmax, Fmin) the applied force when the first grain
-    crushed (the onset: quasi-static loading gives a seed the same onset at every frequency), and
+    crushed (the onset: quasi-static loading gives a seed the same onset at every frequency), the
+    crushes after the peak of the applied force (t > 1/(2f): what delta at the peak does not see), and
     stressRatioAtHalfLoad (halfLoadRatio). {} without a log."""
     try:
         c = np.atleast_1d(np.genfromtxt(os.path.join(runDir, 'checks.csv'), delimiter=',', names=True))
@@ -100,6 +101,8 @@ def checkStats(runDir, params=None):
     if loading:
         load = (float(params['Fmax']), float(params.get('Fmin', 0.0)), float(params['f']))
         out['stressRatioAtHalfLoad'] = halfLoadRatio(c, *load, firstCrush=float(np.min(crushes[0])) if ratios.size else math.inf)
+    if params and 'f' in params and crushes is not None:
+        out['crushesAfterPeak'] = int(np.sum(crushes[0] > 0.5 / float(params['f'])))
     if ratios.size:
         out.update(ratioAtCrushMax=float(np.max(ratios)), ratioAtCrushMean=float(np.mean(ratios)))
         if loading:

@@ -11,7 +11,6 @@ mean displacement with T_c and the other variants keep it.
 import numpy as np
 
 from .aggregate import CHECK_STATS, StudyData, logPositions, paramAxis
-from .records import crushTable
 
 BASELINE = 'batch (the paper)'
 DEFAULT_DAMPING = 0.2  # the oedometer's default local damping [-]
@@ -42,10 +41,6 @@ def collect(*studies):
             row = {'variant': variantOf(s['params']), 'Tc': float(s['params']['Tc']), 'seed': r['seed'],
                    'delta': s[data.peak], 'nCrushed': s['nCrushed']}
             row.update((k, s[k]) for k in CHECK_STATS if k in s)  # StudyData merged checkStats into the summary
-            crushes = crushTable(r['dir'])
-            if crushes is not None:
-                row['crushesAfterPeak'] = int(np.sum(crushes[0] > 0.5 / float(s['params']['f'])))
-                row['crushesListed'] = len(crushes[0])
             out.append(row)
     return out
 
@@ -62,11 +57,11 @@ def table(rows):
         d = np.array([r['delta'] for r in mine])
         n = len(d)
         std = float(np.std(d, ddof=1)) if n > 1 else float('nan')
-        crushed = [r for r in mine if r.get('crushesListed')]
+        crushed = [r for r in mine if r['nCrushed'] and r.get('crushesAfterPeak') is not None]
         res.append({'variant': v, 'Tc': tc, 'n': n, 'delta_mean': float(np.mean(d)), 'delta_std': std,
                     'delta_sem': std / np.sqrt(n) if n > 1 else float('nan'),
                     'nCrushed_mean': float(np.mean([r['nCrushed'] for r in mine])),
-                    'afterPeak_mean': float(np.mean([r['crushesAfterPeak'] / r['crushesListed'] for r in crushed]))
+                    'afterPeak_mean': float(np.mean([r['crushesAfterPeak'] / r['nCrushed'] for r in crushed]))
                     if crushed else float('nan'),
                     'ratioAtCrushMax_mean': float(np.mean([r['ratioAtCrushMax'] for r in crushed]))
                     if crushed and all(r.get('ratioAtCrushMax') is not None for r in crushed) else float('nan')})
