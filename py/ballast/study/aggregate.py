@@ -411,22 +411,28 @@ def effectTest(data, alpha=0.05, power=0.8):
 def blockedTest(data, quantity=None, unit='m', alpha=0.05, power=0.8):
     """The effect test within realizations: a seed is one packing run at every value of the parameter,
     so the seeds are blocks. For `quantity` (default the displacement at peak), over the values where a
-    run has it and the seeds that have it at all of them: Friedman's chi-square test across the values (scipy.stats.friedmanchisquare),
-    and the difference of two means it could have detected: as effectTest's, with the residual
-    standard deviation of the two-way layout (seed + value) in place of the pooled one,
-    s_r = sqrt(sum r_ij^2 / ((b - 1)(k - 1))), r_ij = y_ij - row mean - column mean + grand mean, and
-    b seeds. For a numeric parameter also Page's test of a monotonic trend along it
-    (scipy.stats.page_trend_test, for a rise and for a fall; pTrend is twice the smaller p, the
-    two-sided p). None with fewer than 3 values or 2 complete seeds."""
-    from scipy import stats
+    run has it and the seeds that have it at all of them: withinSeeds. None with fewer than 3 values
+    or 2 complete seeds."""
     quantity = quantity or data.peak
     got = {(r['seed'], r['value']): r['summary'][quantity] for r in data.runs if r['summary'].get(quantity) is not None}
     values = [v for v in data.values if any(w == v for _, w in got)]
     seeds = [s for s in data.seeds if all((s, v) in got for v in values)]
-    k, b = len(values), len(seeds)
-    if k < 3 or b < 2:
+    if len(values) < 3 or len(seeds) < 2:
         return None
-    y = np.array([[got[s, v] for v in values] for s in seeds], dtype=float)
+    out = withinSeeds(np.array([[got[s, v] for v in values] for s in seeds], dtype=float), data.numeric, unit, alpha, power)
+    return dict({'test': 'Friedman', 'quantity': quantity, 'blocks': 'seed', 'valuesTested': values}, **out)
+
+
+def withinSeeds(y, numeric, unit, alpha=0.05, power=0.8):
+    """Friedman's chi-square test across the columns of y (a row per seed, a column per value of the
+    parameter; scipy.stats.friedmanchisquare) and the difference of two means it could have detected:
+    as effectTest's, with the residual standard deviation of the two-way layout (seed + value) in place
+    of the pooled one, s_r = sqrt(sum r_ij^2 / ((b - 1)(k - 1))), r_ij = y_ij - row mean - column mean
+    + grand mean, and b seeds. For a numeric parameter (columns in its order) also Page's test of a
+    monotonic trend along it (scipy.stats.page_trend_test, for a rise and for a fall; pTrend is twice the
+    smaller p, the two-sided p)."""
+    from scipy import stats
+    b, k = y.shape
     if np.all(y == y[0, 0]):
         chi2, p = 0.0, 1.0
     else:
@@ -434,9 +440,9 @@ def blockedTest(data, quantity=None, unit='m', alpha=0.05, power=0.8):
     res = y - y.mean(axis=1, keepdims=True) - y.mean(axis=0, keepdims=True) + y.mean()
     sr = float(np.sqrt((res**2).sum() / ((b - 1) * (k - 1))))
     z = stats.norm.ppf(1 - alpha / 2) + stats.norm.ppf(power)
-    out = {'test': 'Friedman', 'quantity': quantity, 'blocks': 'seed', 'seeds': b, 'values': k, 'valuesTested': values,
-           'chi2': float(chi2), 'p': float(p), 'residualStd [%s]' % unit: sr, 'detectableDifference [%s]' % unit: float(z * sr * np.sqrt(2 / b))}
-    if data.numeric:
+    out = {'seeds': b, 'values': k, 'chi2': float(chi2), 'p': float(p), 'residualStd [%s]' % unit: sr,
+           'detectableDifference [%s]' % unit: float(z * sr * np.sqrt(2 / b))}
+    if numeric:
         rise = stats.page_trend_test(y)
         fall = stats.page_trend_test(y, predicted_ranks=list(range(k, 0, -1)))
         out.update(trend='rise' if rise.pvalue <= fall.pvalue else 'fall', pageL=float(max(rise.statistic, fall.statistic)),
