@@ -98,10 +98,10 @@ def thinChecks(columns, maxRows=MAX_CHECK_ROWS, times=()):
     and the largest stress ratios to 1/200 of their range (what the ft0 of another criterion is read
     from)."""
     around = []
-    for x in times:
+    if len(times):
         t = np.asarray(columns['t'], dtype=float)
-        around += [i for i in (np.searchsorted(t, x, 'right') - 1, np.searchsorted(t, x, 'left')) if 0 <= i < len(t)]
-    around = sorted(set(around))  # the rows around `times` come on top of maxRows: they do not coarsen the rest
+        around = sorted(set(int(i) for x in times for i in (np.searchsorted(t, x, 'right') - 1, np.searchsorted(t, x, 'left'))
+                            if 0 <= i < len(t)))  # on top of maxRows: they do not coarsen the rest
     return thinCurve(columns, [q for q in ('maxStressRatio', 'maxCrushableRatio') if q in columns],
                      list(np.flatnonzero(np.asarray(columns['nCrushed']) > 0)) + around, maxRows + len(around))
 
