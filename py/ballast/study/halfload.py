@@ -98,7 +98,8 @@ def read(path):
 
 def summarize(path):
     """Per damping: the frequencies, the seeds, the matrices (a row per seed, a column per f, NaN where
-    missing) of the ratio and of the unbalanced force, the ratio's mean per f, and the within-seed test of
+    missing) of the ratio and of the unbalanced force, the ratio's mean and the unbalanced force's median
+    per f, and the within-seed test of
     the ratio across f (aggregate.withinSeeds, Page's trend along f) over the seeds that have every f
     (None with fewer than 3 frequencies or 2 such seeds)."""
     from .aggregate import withinSeeds
@@ -114,7 +115,8 @@ def summarize(path):
         full = ~np.isnan(m['stressRatioAtHalfLoad']).any(axis=1)
         test = withinSeeds(m['stressRatioAtHalfLoad'][full], True, '-') if len(fs) >= 3 and full.sum() >= 2 else None
         out[float(d)] = {'f': fs, 'seeds': seeds.astype(int), 'ratio': m['stressRatioAtHalfLoad'], 'unbalanced': m['unbalanced'],
-                         'ratioMean': np.nanmean(m['stressRatioAtHalfLoad'], axis=0), 'test': test}
+                         'ratioMean': np.nanmean(m['stressRatioAtHalfLoad'], axis=0),
+                         'unbalancedMedian': np.nanmedian(m['unbalanced'], axis=0), 'test': test}
     return out
 
 
