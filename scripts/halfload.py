@@ -48,7 +48,8 @@ def main(argv=None):
         return 2
     os.makedirs(a.out, exist_ok=True)
     tests = {'%g' % d: dict(s['test'] or {}, f=s['f'].tolist(), ratioMean=s['ratioMean'].tolist(),
-                            unbalancedMedian=s['unbalancedMedian'].tolist()) for d, s in summary.items()}
+                            unbalancedMedian=s['unbalancedMedian'].tolist(), vRmsMedian=s['vRmsMedian'].tolist())
+             for d, s in summary.items()}
     for d, t in tests.items():
         print('damping %s: mean sigma/f_t at Fmax/2 per f %s: %s' % (d, t['f'], ', '.join('%.3f' % x for x in t['ratioMean'])))
         if 'pTrend' in t:

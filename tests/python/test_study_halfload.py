@@ -83,7 +83,7 @@ def fabricate(path):
         w = csv.writer(fh)
         w.writerow(halfload.HEADER)
         for s, f, d, r in rows:
-            w.writerow([s, f, d, r, FMAX / 2, FMAX / 2, 1e-4, 1e-3 * f, 1e-3, 1000, 1.0])
+            w.writerow([s, f, d, r, FMAX / 2, FMAX / 2, 1e-4, 1e-3 * f, 1e-3, 1000, 1.0])  # unbalanced 1e-3 f, vRms 1e-3
     return path
 
 
@@ -93,7 +93,7 @@ def test_summary_by_hand(tmp_path):
     assert math.isnan(s['ratio'][3, 2]) and s['ratio'][3, 1] == 0.8
     # means over the seeds that have the value: (0.6 + 0.7 + 0.8 + 0.9) / 4 at 0.5 Hz, (0.62 + 0.72 + 0.82) / 3 at 8 Hz
     assert s['ratioMean'] == pytest.approx([0.75, (0.61 + 0.71 + 0.81 + 0.8) / 4, 0.72])
-    assert s['unbalancedMedian'] == pytest.approx([0.5e-3, 2e-3, 8e-3])  # written as 1e-3 f
+    assert s['unbalancedMedian'] == pytest.approx([0.5e-3, 2e-3, 8e-3]) and s['vRmsMedian'] == pytest.approx([1e-3] * 3)
     # Page's test over the 3 complete seeds: L = 1*3 + 2*6 + 3*9 = 42, exact p of a rise (1/3!)^3 = 1/216, two-sided
     t = s['test']
     assert t['seeds'] == 3 and t['trend'] == 'rise' and t['pageL'] == 42 and t['pTrend'] == pytest.approx(2 / 216, rel=1e-9)

@@ -98,8 +98,8 @@ def read(path):
 
 def summarize(path):
     """Per damping: the frequencies, the seeds, the matrices (a row per seed, a column per f, NaN where
-    missing) of the ratio and of the unbalanced force, the ratio's mean and the unbalanced force's median
-    per f, and the within-seed test of
+    missing) of the ratio and of the unbalanced force, the ratio's mean, the medians of the unbalanced
+    force and of the rms speed per f, and the within-seed test of
     the ratio across f (aggregate.withinSeeds, Page's trend along f) over the seeds that have every f
     (None with fewer than 3 frequencies or 2 such seeds)."""
     from .aggregate import withinSeeds
@@ -108,7 +108,7 @@ def summarize(path):
     for d in np.unique(c['damping']):
         mine = c['damping'] == d
         fs, seeds = np.unique(c['f'][mine]), np.unique(c['seed'][mine])
-        m = {q: np.full((len(seeds), len(fs)), np.nan) for q in ('stressRatioAtHalfLoad', 'unbalanced')}
+        m = {q: np.full((len(seeds), len(fs)), np.nan) for q in ('stressRatioAtHalfLoad', 'unbalanced', 'vRms')}
         for k in np.flatnonzero(mine):
             for q in m:
                 m[q][np.searchsorted(seeds, c['seed'][k]), np.searchsorted(fs, c['f'][k])] = c[q][k]
@@ -116,7 +116,8 @@ def summarize(path):
         test = withinSeeds(m['stressRatioAtHalfLoad'][full], True, '-') if len(fs) >= 3 and full.sum() >= 2 else None
         out[float(d)] = {'f': fs, 'seeds': seeds.astype(int), 'ratio': m['stressRatioAtHalfLoad'], 'unbalanced': m['unbalanced'],
                          'ratioMean': np.nanmean(m['stressRatioAtHalfLoad'], axis=0),
-                         'unbalancedMedian': np.nanmedian(m['unbalanced'], axis=0), 'test': test}
+                         'unbalancedMedian': np.nanmedian(m['unbalanced'], axis=0),
+                         'vRmsMedian': np.nanmedian(m['vRms'], axis=0), 'test': test}
     return out
 
 
