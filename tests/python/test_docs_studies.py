@@ -99,3 +99,30 @@ def test_fig4_table_is_the_records():
     assert [int(numbers(c)[0]) for c in tableRow(text, 'runs recorded', 6)] == [int(r['n']) for r in st]
     for cell, r in zip(tableRow(text, 'applied force at the first crush, mean [kN]', 6), st):
         assert numbers(cell)[0] == pytest.approx(1e-3 * float(r['forceAtFirstCrush_mean [N]']), abs=0.51)
+
+
+def test_half_load_table_is_the_sweep():
+    import json
+    text = section('#### The force network before the first crush, against f')
+    with open(os.path.join(ROOT, 'docs', 'studies', 'halfload', 'test.json')) as fh:
+        t = json.load(fh)['0.2']
+    assert [numbers(c)[0] for c in tableRow(text, 'f [Hz]', 3)] == t['f']
+    assert [numbers(c)[0] for c in tableRow(text, 'largest σ/f_t at F_max/2, mean', 3)] == pytest.approx(t['ratioMean'], abs=5e-4)
+    for label, key in (('unbalanced force at F_max/2, median [-]', 'unbalancedMedian'),
+                       ('rms speed of the grains, median [m/s]', 'vRmsMedian')):
+        for cell, value in zip(tableRow(text, label, 3), t[key]):
+            assert float(cell) == pytest.approx(value, rel=0.05 / 1.9)  # two significant digits
+
+
+def test_half_load_sweep_is_the_first_quarter_of_the_fig4_runs():
+    # the same packing, engines and steps up to Fmax/2: the sweep's ratio is the Fig. 4 record's
+    from ballast.study.aggregate import StudyData
+    with open(os.path.join(ROOT, 'docs', 'studies', 'halfload', 'runs.csv'), newline='') as fh:
+        sweep = {(int(r['seed [-]']), float(r['f [Hz]'])): r['stressRatioAtHalfLoad [-]'] for r in csv.DictReader(fh)
+                 if r['stressRatioAtHalfLoad [-]'] and r['damping [-]'] == '0.2'}
+    fig4 = {(r['seed'], r['value']): r['summary']['stressRatioAtHalfLoad']
+            for r in StudyData(os.path.join(ROOT, 'docs', 'studies', 'frequency')).runs}
+    both = [k for k in sweep if fig4.get(k) is not None]
+    assert len(both) >= 12
+    for k in both:
+        assert float(sweep[k]) == pytest.approx(fig4[k], abs=1e-6), k
