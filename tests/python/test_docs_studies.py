@@ -99,6 +99,16 @@ def test_fig4_table_is_the_records():
     assert [int(numbers(c)[0]) for c in tableRow(text, 'runs recorded', 6)] == [int(r['n']) for r in st]
     for cell, r in zip(tableRow(text, 'applied force at the first crush, mean [kN]', 6), st):
         assert numbers(cell)[0] == pytest.approx(1e-3 * float(r['forceAtFirstCrush_mean [N]']), abs=0.51)
+    for cell, r in zip(tableRow(text, 'largest σ/f_t at F_max/2 before any crush, mean', 6), st):
+        assert numbers(cell)[0] == pytest.approx(float(r['stressRatioAtHalfLoad_mean [-]']), abs=5e-4)
+    # the per-seed table: delta at the applied peak of every run
+    with open(os.path.join(ROOT, 'docs', 'studies', 'frequency', 'runs.csv'), newline='') as fh:
+        runs = list(csv.DictReader(fh))
+    fs = sorted(set(float(r['f']) for r in runs))
+    for seed in sorted(set(r['seed'] for r in runs)):
+        for cell, f in zip(tableRow(text, seed, 6), fs):
+            (r,) = [r for r in runs if r['seed'] == seed and float(r['f']) == f]
+            assert float(cell) == pytest.approx(1e3 * float(r['deltaAtAppliedPeak [m]']), abs=0.051), (seed, f)
 
 
 def test_half_load_table_is_the_sweep():
