@@ -20,6 +20,7 @@ SMALL = dict(diameter=0.15, height=0.08, samples=1000, progress=60, strength=1e1
 F, FMAX, TC = 20.0, 1.5e6, 1e-4  # [Hz], [N], [s] (the default crushing period)
 TOL_QUASI_STATIC = 0.05  # [-] of Fmax: the grains' force on the plate against the applied one (servo-free plate, slips)
 TOL_SCALE = 1e-9         # [-] relative: sigma/f_t = sigma r / ft0 exactly, the trajectory is the same (no crush)
+TOL_INTERPOLATION = 1e-3  # [-] relative: a chord over 0.6 % of Fmax against the step at Fmax/2
 
 
 def test_plan_checks_every_run_first():
@@ -63,6 +64,16 @@ def test_the_ratio_scales_as_one_over_ft0(sweep):
     assert 0 < c['stressRatioAtHalfLoad'][0] < 1  # no crush before Fmax/2 at these strengths
 
 
+def test_checks_every_step_give_the_same_ratio(sweep):
+    # the crush check only reads stresses until a grain crushes: checked every step (Tc = 0) the run is the
+    # same, and the ratio differs only by the interpolation across Tc = 1e-4 s (9 kN of eq. 8 at 20 Hz)
+    path, runs, _ = sweep
+    other = os.path.join(os.path.dirname(path), 'every-step.csv')
+    halfload.sweep(other, [dict(runs[0], Tc=0)], say=lambda s: None)
+    assert halfload.read(other)['stressRatioAtHalfLoad'][0] == pytest.approx(halfload.read(path)['stressRatioAtHalfLoad'][0],
+                                                                             rel=TOL_INTERPOLATION)
+
+
 def test_a_sweep_resumes_from_its_csv(sweep):
     path, runs, _ = sweep
     before = open(path).read()
@@ -70,9 +81,10 @@ def test_a_sweep_resumes_from_its_csv(sweep):
 
 
 def test_rare_checks_are_refused_before_any_run():
-    pytest.importorskip('yade')
-    with pytest.raises(ValueError, match=r'Tc = 0\.01 s.*f = 20'):
-        halfload.halfLoad(Tc=0.01, f=F, **SMALL)
+    # eq. 8 rises by pi f Fmax Tc between two checks: 5 % of Fmax at f = 20 Hz takes Tc < 7.96e-4 s
+    with pytest.raises(ValueError, match=r'Tc = 0\.01 s.*f = 20.*Tc < 0\.000796'):
+        halfload.plan([1, 2], [F], [0.2], Tc=0.01, **SMALL)
+    assert len(halfload.plan([1], [F], [0.2], Tc=7.9e-4, **SMALL)) == 1 and len(halfload.plan([1], [F], [0.2], Tc=0, **SMALL)) == 1
 
 
 def fabricate(path):

@@ -23,31 +23,39 @@ COLUMNS = [('seed', '-'), ('f', 'Hz'), ('damping', '-'), ('stressRatioAtHalfLoad
 HEADER = ['%s [%s]' % c for c in COLUMNS]
 
 
+def checkRun(params):
+    """The oedometer's parameters checked (ParamError names a bad value), and the crushing period: the two
+    checks around 1/(4f) must lie within HALF_LOAD_GAP Fmax of each other (eq. 8 rises by pi f Fmax Tc
+    between them). Returns the full parameter dict."""
+    p = check(params)
+    if p['Tc'] * math.pi * p['f'] > HALF_LOAD_GAP:
+        raise ValueError('halfLoad: Tc = %r s checks too rarely at f = %r Hz: the two checks around 1/(4f) must lie '
+                         'within %g Fmax (Tc < %.3g s, or 0: every step)' % (
+                             p['Tc'], p['f'], HALF_LOAD_GAP, HALF_LOAD_GAP / (math.pi * p['f'])))
+    return p
+
+
 def plan(seeds, fs, dampings, **params):
-    """The runs of the sweep as parameter dicts, every one checked (ParamError names a bad value) before
-    any runs."""
+    """The runs of the sweep as parameter dicts, every one checked (checkRun) before any runs."""
     runs = [dict(params, seed=s, f=f, damping=d) for s in seeds for f in fs for d in dampings]
     for p in runs:
-        check(p)
+        checkRun(p)
     return runs
 
 
 def halfLoad(**params):
     """Prepare a realization (its stored packing if there is one), load it past t = 1/(4f) to the next
-    crush check (the checks run every Tc; Tc > 0 needed) and return its row (COLUMNS' names)."""
+    crush check (every Tc, or every step) and return its row (COLUMNS' names)."""
     from yade import O
 
     from ..oedometer import Oedometer
-    p = check(params)
-    if not p['Tc'] > 0 or p['Tc'] * math.pi * p['f'] > HALF_LOAD_GAP:
-        raise ValueError('halfLoad: Tc = %r s checks too rarely at f = %r Hz: the two checks around 1/(4f) must lie '
-                         'within %g Fmax (Tc < %.3g s)' % (p['Tc'], p['f'], HALF_LOAD_GAP, HALF_LOAD_GAP / (math.pi * p['f'])))
+    p = checkRun(params)
     cpu0 = time.process_time()
     run = Oedometer(**params)
     run.prepare()
     run.startLoading()
     i0, t0 = O.iter, run.loading.t0
-    tEnd = t0 + halfLoadTime(p['f']) + 1.5 * p['Tc']
+    tEnd = t0 + halfLoadTime(p['f']) + 1.5 * (p['Tc'] or O.dt)
     run.phases.run('load to Fmax/2', tEnd=tEnd, simSpan=tEnd - O.time, simStart=O.time)
     rows = np.array(run.outputs.checkRows, dtype=float)
     crushed = rows[rows[:, 2] > 0, 0]
