@@ -48,12 +48,16 @@ def main(argv=None):
         return 2
     os.makedirs(a.out, exist_ok=True)
     tests = {'%g' % d: dict(s['test'] or {}, f=s['f'].tolist(), ratioMean=s['ratioMean'].tolist(),
-                            unbalancedMedian=s['unbalancedMedian'].tolist(), vRmsMedian=s['vRmsMedian'].tolist())
-             for d, s in summary.items()}
+                            unbalancedMedian=s['unbalancedMedian'].tolist(), vRmsMedian=s['vRmsMedian'].tolist(),
+                            riseAgainstBase=s.get('riseAgainstBase')) for d, s in summary.items()}
     for d, t in tests.items():
         print('damping %s: mean sigma/f_t at Fmax/2 per f %s: %s' % (d, t['f'], ', '.join('%.3f' % x for x in t['ratioMean'])))
         if 'pTrend' in t:
             print('  within %d seeds: Friedman p = %.3g, Page trend %s p = %.3g' % (t['seeds'], t['p'], t['trend'], t['pTrend']))
+        r = t['riseAgainstBase']
+        if r:
+            print('  rise from the lowest to the highest f, at damping %g minus here: %.3f +- %.3f (%d seeds, Wilcoxon p = %.3g)' % (
+                r['baseDamping'], r['meanDifference'], r['sem'], r['seeds'], r['pWilcoxon']))
     with open(os.path.join(a.out, 'test.json'), 'w') as fh:
         json.dump(tests, fh, indent=1)
     print(halfload.figure(summary, os.path.join(a.out, 'halfload.png')))

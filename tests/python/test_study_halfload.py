@@ -91,6 +91,8 @@ def fabricate(path):
     # damping 0.2: seeds 1-3 rise along f = 0.5, 2, 8 Hz (every seed ranks them 1, 2, 3); seed 4 lacks 8 Hz
     rows = [(s, f, 0.2, 0.5 + 0.1 * s + 0.01 * k) for s in (1, 2, 3) for k, f in enumerate((0.5, 2.0, 8.0))]
     rows += [(4, 0.5, 0.2, 0.9), (4, 2.0, 0.2, 0.8)]
+    # damping 0.6: seeds 1-3 flat along f (0.5 + 0.1 s): each rises 0.02 less than at damping 0.2
+    rows += [(s, f, 0.6, 0.5 + 0.1 * s) for s in (1, 2, 3) for f in (0.5, 2.0, 8.0)]
     with open(path, 'w', newline='') as fh:
         w = csv.writer(fh)
         w.writerow(halfload.HEADER)
@@ -109,6 +111,11 @@ def test_summary_by_hand(tmp_path):
     # Page's test over the 3 complete seeds: L = 1*3 + 2*6 + 3*9 = 42, exact p of a rise (1/3!)^3 = 1/216, two-sided
     t = s['test']
     assert t['seeds'] == 3 and t['trend'] == 'rise' and t['pageL'] == 42 and t['pTrend'] == pytest.approx(2 / 216, rel=1e-9)
+    # the rise at damping 0.2 minus at 0.6: 0.02 in each of 3 seeds; Wilcoxon's exact two-sided p = 2 (1/2)^3
+    r = halfload.summarize(fabricate(str(tmp_path / 'runs.csv')))[0.6]['riseAgainstBase']
+    assert (r['baseDamping'], r['seeds']) == (0.2, 3) and r['meanDifference'] == pytest.approx(0.02) and r['sem'] == pytest.approx(0, abs=1e-12)
+    assert r['pWilcoxon'] == pytest.approx(0.25)
+    assert 'riseAgainstBase' not in s
 
 
 def test_report_command(tmp_path):

@@ -109,7 +109,12 @@ def summarize(path):
     missing) of the ratio and of the unbalanced force, the ratio's mean, the medians of the unbalanced
     force and of the rms speed per f, and the within-seed test of
     the ratio across f (aggregate.withinSeeds, Page's trend along f) over the seeds that have every f
-    (None with fewer than 3 frequencies or 2 such seeds)."""
+    (None with fewer than 3 frequencies or 2 such seeds). For every damping but the lowest, under
+    riseAgainstBase: per seed, the rise of the ratio from the lowest to the highest f at the lowest
+    damping minus its rise at this one; their mean, standard error and Wilcoxon's signed-rank p (does
+    the damping change the rate effect?)."""
+    from scipy import stats
+
     from .aggregate import withinSeeds
     c = read(path)
     out = {}
@@ -126,6 +131,20 @@ def summarize(path):
                          'ratioMean': np.nanmean(m['stressRatioAtHalfLoad'], axis=0),
                          'unbalancedMedian': np.nanmedian(m['unbalanced'], axis=0),
                          'vRmsMedian': np.nanmedian(m['vRms'], axis=0), 'test': test}
+    base = min(out) if out else None
+    for d, s in out.items():  # the rise from the lowest to the highest f against the lowest damping's, per seed
+        b = out[base]
+        if d == base or b['f'][0] != s['f'][0] or b['f'][-1] != s['f'][-1]:
+            continue
+        rises = {}
+        for name, t in (('base', b), ('this', s)):
+            rises[name] = dict(zip(t['seeds'], t['ratio'][:, -1] - t['ratio'][:, 0]))
+        diff = np.array([rises['base'][k] - rises['this'][k] for k in rises['base'] if k in rises['this']])
+        diff = diff[np.isfinite(diff)]
+        if diff.size >= 2:
+            s['riseAgainstBase'] = {'baseDamping': base, 'seeds': int(diff.size), 'meanDifference': float(diff.mean()),
+                                    'sem': float(diff.std(ddof=1) / np.sqrt(diff.size)),
+                                    'pWilcoxon': float(stats.wilcoxon(diff).pvalue) if np.any(diff != 0) else 1.0}
     return out
 
 
