@@ -70,8 +70,8 @@ def done(path):
     """The KEYS of the runs the CSV at path has (empty if it does not exist)."""
     if not os.path.isfile(path):
         return set()
-    with open(path, newline='') as fh:
-        return {tuple(float(r['%s [%s]' % c]) for c in COLUMNS if c[0] in KEYS) for r in csv.DictReader(fh)}
+    c = read(path)
+    return set(zip(*(c[k].tolist() for k in KEYS)))
 
 
 def sweep(path, runs, say=print):
