@@ -17,10 +17,15 @@ def halfLoadTime(f):
     return 0.25 / f
 
 
+def peakTime(f):
+    """The loading time [s] of eq. 8's peak, Fmax: half the period, 1/(2f)."""
+    return 0.5 / f
+
+
 def loadCurve(Fmax, Fmin, f, t):
     """The load [N] at loading time t [s]: eq. 8 up to its peak at T/2 = 1/(2f), then cycles between Fmax
     and Fmin, Fmin + (Fmax - Fmin)/2 [1 + cos(2 pi f (t - T/2))]; with Fmin = 0 it is eq. 8 at every t."""
     t = np.asarray(t, dtype=float)
-    later = Fmin + (Fmax - Fmin) / 2 * (1 + np.cos(2 * math.pi * f * (t - 0.5 / f)))
-    F = np.where(t <= 0.5 / f, eq8(Fmax, f, t), later)
+    later = Fmin + (Fmax - Fmin) / 2 * (1 + np.cos(2 * math.pi * f * (t - peakTime(f))))
+    F = np.where(t <= peakTime(f), eq8(Fmax, f, t), later)
     return F if F.ndim else float(F)

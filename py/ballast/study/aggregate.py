@@ -22,7 +22,7 @@ import os
 
 import numpy as np
 
-from ..oedometer.loadcurve import halfLoadTime, loadCurve
+from ..oedometer.loadcurve import halfLoadTime, loadCurve, peakTime
 from ..oedometer.parameters import PARAMS
 from .files import readSummary
 from .options import StudyError
@@ -97,16 +97,17 @@ def checkStats(runDir, params=None):
     out.update(crushingChecks=n, crushesPerCrushingCheck=float(np.mean(hit['nCrushed'])) if n else None)
     crushes = crushTable(runDir)
     ratios = crushes[2] if crushes is not None else np.array([])
+    first = float(np.min(crushes[0])) if ratios.size else math.inf  # the first crush's time [s]
     loading = params and all(k in params for k in ('f', 'Fmax'))
     if loading:
         load = (float(params['Fmax']), float(params.get('Fmin', 0.0)), float(params['f']))
-        out['stressRatioAtHalfLoad'] = halfLoadRatio(c, *load, firstCrush=float(np.min(crushes[0])) if ratios.size else math.inf)
+        out['stressRatioAtHalfLoad'] = halfLoadRatio(c, *load, firstCrush=first)
     if params and 'f' in params and crushes is not None:
-        out['crushesAfterPeak'] = int(np.sum(crushes[0] > 0.5 / float(params['f'])))
+        out['crushesAfterPeak'] = int(np.sum(crushes[0] > peakTime(float(params['f']))))
     if ratios.size:
         out.update(ratioAtCrushMax=float(np.max(ratios)), ratioAtCrushMean=float(np.mean(ratios)))
         if loading:
-            out['forceAtFirstCrush'] = loadCurve(*load, float(np.min(crushes[0])))
+            out['forceAtFirstCrush'] = loadCurve(*load, first)
     return out
 
 
@@ -500,14 +501,14 @@ def aggregate(path, param=None, outDir=None, xlog='auto', figures=True):
               'would have been found with probability %g at the %g level' % (
                   data.param, test['H'], test['p'], test['groups'], test['runs'], test['detectableDifference [m]'] * 1e3,
                   test['power'], test['alpha']))
+        def trend(t):
+            return '; Page trend: %s, p = %.3g' % (t['trend'], t['pTrend']) if 'trend' in t else ''
         if blocked is not None:
             print('Friedman across %s within seeds: chi2 = %.3g, p = %.3g (%d seeds complete); detectable difference %.1f mm%s' % (
-                data.param, blocked['chi2'], blocked['p'], blocked['seeds'], blocked['detectableDifference [m]'] * 1e3,
-                '; Page trend: %s, p = %.3g' % (blocked['trend'], blocked['pTrend']) if 'trend' in blocked else ''))
+                data.param, blocked['chi2'], blocked['p'], blocked['seeds'], blocked['detectableDifference [m]'] * 1e3, trend(blocked)))
         for what, t in (('applied force at the first crush', onset), ('largest sigma/f_t at Fmax/2 before a crush', network)):
             if t is not None:
-                print('%s, within seeds: Friedman p = %.3g (%d seeds)%s' % (
-                    what, t['p'], t['seeds'], '; Page trend: %s, p = %.3g' % (t['trend'], t['pTrend']) if 'trend' in t else ''))
+                print('%s, within seeds: Friedman p = %.3g (%d seeds)%s' % (what, t['p'], t['seeds'], trend(t)))
     print('tables: %s, %s' % (runsCsv, statsCsv))
     if figures:
         print('figures: %s' % ', '.join(plots(data, outDir, xlog)))

@@ -15,7 +15,7 @@ import numpy as np
 
 from ..oedometer.loadcurve import halfLoadTime
 from ..oedometer.parameters import check
-from .aggregate import HALF_LOAD_GAP, halfLoadRatio
+from .aggregate import HALF_LOAD_GAP, fmt, halfLoadRatio
 
 KEYS = ('seed', 'f', 'damping')  # what identifies a run of the sweep
 COLUMNS = [('seed', '-'), ('f', 'Hz'), ('damping', '-'), ('stressRatioAtHalfLoad', '-'), ('Fapplied', 'N'), ('F', 'N'),
@@ -87,7 +87,7 @@ def sweep(path, runs, say=print):
             w = csv.writer(fh)
             if new:
                 w.writerow(HEADER)
-            w.writerow([repr(row[c]) if isinstance(row[c], float) else ('' if row[c] is None else row[c]) for c, _ in COLUMNS])
+            w.writerow([fmt(row[c]) for c, _ in COLUMNS])
             fh.flush()
             os.fsync(fh.fileno())
         say('half-load sweep: %d/%d done: seed %d, f = %g Hz, damping %g: sigma/f_t %s, unbalanced %.3g (%.0f s)' % (
@@ -132,14 +132,11 @@ def summarize(path):
                          'unbalancedMedian': np.nanmedian(m['unbalanced'], axis=0),
                          'vRmsMedian': np.nanmedian(m['vRms'], axis=0), 'test': test}
     base = min(out) if out else None
-    for d, s in out.items():  # the rise from the lowest to the highest f against the lowest damping's, per seed
-        b = out[base]
-        if d == base or b['f'][0] != s['f'][0] or b['f'][-1] != s['f'][-1]:
+    rise = {d: dict(zip(s['seeds'], s['ratio'][:, -1] - s['ratio'][:, 0])) for d, s in out.items()}  # per seed, lowest to highest f
+    for d, s in out.items():
+        if d == base or out[base]['f'][0] != s['f'][0] or out[base]['f'][-1] != s['f'][-1]:
             continue
-        rises = {}
-        for name, t in (('base', b), ('this', s)):
-            rises[name] = dict(zip(t['seeds'], t['ratio'][:, -1] - t['ratio'][:, 0]))
-        diff = np.array([rises['base'][k] - rises['this'][k] for k in rises['base'] if k in rises['this']])
+        diff = np.array([rise[base][k] - rise[d][k] for k in rise[base] if k in rise[d]])
         diff = diff[np.isfinite(diff)]
         if diff.size >= 2:
             s['riseAgainstBase'] = {'baseDamping': base, 'seeds': int(diff.size), 'meanDifference': float(diff.mean()),
