@@ -8,7 +8,7 @@ set -euo pipefail
 cd "$(dirname "$(readlink -f "$0")")"
 
 # Everything comes from Debian's packages.
-PACKAGES=(yade libeigen3-dev libboost-python-dev libboost-numpy-dev python3-dev python3-numpy python3-scipy
+PACKAGES=(yade libeigen3-dev libboost-python-dev libboost-numpy-dev python3-dev python3-numpy python3-scipy python3-pandas
           python3-pytest python3-matplotlib python3-distributed cmake g++ make libgtest-dev)
 
 missing=()

@@ -70,7 +70,7 @@ def measure(n):
     rep = 5 if nGrains > 5000 else 20
     tCrush = bestCheck(crush, rep)
     tAbr = bestCheck(abrasion, rep)
-    bounded._fire()  # its first check verifies the bounds with a full read
+    bounded.fire()  # its first check verifies the bounds with a full read
     tBounded = bestCheck(bounded, rep)
     grains = [b for b in O.bodies if b.dynamic]
     nBf = min(len(grains), 2000)                  # yade.bf is slow: time a sample, scale per grain

@@ -32,7 +32,7 @@ import time
 
 from yade import O, utils
 
-from ballast import harvest
+from ballast import harvest, runtime
 from ballast.engines import BallastAbrasionEngine, BallastCrushEngine
 from ballast.oedometer import Oedometer
 
@@ -49,7 +49,7 @@ PEAK_FRACTION = 0.4   # window 2 starts at 40 % of the cycle: F = Fmax (1 - cos(
 
 def prepare(a):
     """The stored packing with the plate, saved in memory at the two windows; returns the experiment
-    and the Python state of the plate servo at each window (O.loadTmp restores only the scene)."""
+    and the names of the saved windows."""
     run = Oedometer(seed=a.seed, results=tempfile.mkdtemp(prefix='bench_loading_'), packingDir=a.packingDir,
                     progress=30, samples=100)
     run.prepare()
@@ -81,16 +81,13 @@ def ballastEngines(p, crushEvery, abrasionEvery, prefilter=True):
 
 
 def saveWindow(run, saved, name):
-    O.saveTmp('bench-' + name)
-    saved[name] = run.loading.state()
+    O.saveTmp('bench-' + name)  # with the state of the plate servo (ballast.runtime)
+    saved[name] = 'bench-' + name
 
 
 def restoreWindow(run, saved, name):
-    O.loadTmp('bench-' + name)
-    run.loading.setState(saved[name])
-    # the loaded scene is older than the experiment's last step: without this its servo callback
-    # would rebuild another experiment from O.tags
-    run.adopt()
+    O.loadTmp(saved[name])
+    runtime.restore()  # the servo as it was at the window, not as the experiment left it
     harvest.refresh()
 
 
@@ -145,12 +142,12 @@ def timeChecks(run, saved, name):
 
     tCrush = bestCheck(crush, 20)
     tAbrFull = bestCheck(abrFull, 20)
-    abr._fire()  # the first check verifies the bound with a full read; time the ones after it
+    abr.fire()  # the first check verifies the bound with a full read; time the ones after it
     tAbr = bestCheck(abr, 20)
     # the prefilter at the real strength: how many grains are candidates here
     real = BallastAbrasionEngine(strength=run.p['strength'])
-    real._fire()
-    real._fire()
+    real.fire()
+    real.fire()
 
     def bfCheck():
         for b in grains:

@@ -21,7 +21,7 @@ def bestCheck(engine, repeat):
 
     def check():
         harvest.invalidate()
-        engine._fire()
+        engine.fire()
     return best(check, repeat)
 
 

@@ -10,17 +10,17 @@
 
 namespace ballast {
 
-void AbrasionParameters::validate() const
+AbrasionParameters AbrasionParameters::checked(double strength, double rMin)
 {
-	requirePositive("strength", strength);
-	requireNonNegative("rMin", rMin);
+	// braces: checked in the order written
+	return AbrasionParameters{requireInRange(ranges::strength, "strength", strength),
+	                          requireInRange(ranges::rMin, "rMin", rMin)};
 }
 
 void evaluateAbrasion(const AbrasionParameters& p, long n, const double* radii, long nContacts, const long* grain1,
                       const long* grain2, const double* Fn, const double* R1, const double* R2, const double* uN,
                       double* p0max, std::uint8_t* abrade)
 {
-	p.validate();
 	for (long g = 0; g < n; ++g) {
 		requirePositive("radii", g, radii[g]);
 		p0max[g] = 0;

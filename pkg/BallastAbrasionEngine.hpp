@@ -9,10 +9,18 @@
 
 namespace ballast {
 
-struct AbrasionParameters {
-	double strength;  // pressure that abrades a grain [Pa], > 0
-	double rMin;      // grains with r < rMin never abrade [m], >= 0
-	void   validate() const;
+// The abrasion parameters, each within its range (InputCheck.hpp): `checked` is the only way to
+// build them, so evaluateAbrasion takes them as valid and checks only the grains' and contacts' values.
+class AbrasionParameters {
+public:
+	const double strength;  // pressure that abrades a grain [Pa]
+	const double rMin;      // grains with r < rMin never abrade [m]
+
+	// ArgumentError naming the first parameter out of its range, in the order of the arguments.
+	static AbrasionParameters checked(double strength, double rMin);
+
+private:
+	AbrasionParameters(double strength_, double rMin_) : strength(strength_), rMin(rMin_) {}
 };
 
 // n grains of radii [m]; nContacts contacts, contact c between side 1 and side 2 with

@@ -7,12 +7,21 @@
 
 namespace ballast {
 
+const std::vector<Criterion>& criteria()
+{
+	static const std::vector<Criterion> all = {Criterion::VonMises, Criterion::MaxContactForce, Criterion::MajorPrincipal};
+	return all;
+}
+
 Criterion parseCriterion(const std::string& name)
 {
-	if (name == "vonMises") return Criterion::VonMises;
-	if (name == "maxContactForce") return Criterion::MaxContactForce;
-	if (name == "majorPrincipal") return Criterion::MajorPrincipal;
-	throw ArgumentError("criterion: expected 'vonMises', 'maxContactForce' or 'majorPrincipal', got '" + name + "'");
+	std::string names;  // "'vonMises', 'maxContactForce' or 'majorPrincipal'"
+	for (size_t i = 0; i < criteria().size(); ++i) {
+		const Criterion c = criteria()[i];
+		if (name == criterionName(c)) return c;
+		names += std::string(i == 0 ? "" : i + 1 < criteria().size() ? ", " : " or ") + "'" + criterionName(c) + "'";
+	}
+	throw ArgumentError("criterion: expected " + names + ", got '" + name + "'");
 }
 
 const char* criterionName(Criterion c)

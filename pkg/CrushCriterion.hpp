@@ -7,6 +7,7 @@
 // Units: Pa. No YADE here.
 #pragma once
 #include <string>
+#include <vector>
 
 #include "Types.hpp"
 
@@ -14,12 +15,14 @@ namespace ballast {
 
 enum class Criterion { VonMises, MaxContactForce, MajorPrincipal };
 
+// Every criterion, in the order of the enum.
+const std::vector<Criterion>& criteria();
 // "vonMises", "maxContactForce" or "majorPrincipal"; anything else raises ArgumentError naming `criterion`.
-Criterion parseCriterion(const std::string& name);
+Criterion   parseCriterion(const std::string& name);
 const char* criterionName(Criterion c);
 
-// The criterion's stress [Pa] of a grain of radius r [m] (> 0) with fabric stress s [Pa] and largest
-// normal contact force fMax [N] (>= 0; read only by maxContactForce).
+// The criterion's stress [Pa] of a grain of radius r [m] with fabric stress s [Pa] and largest normal
+// contact force fMax [N] (read only by maxContactForce); the caller checked r > 0 and fMax >= 0.
 double criterionStress(Criterion c, const Mat3& s, double fMax, double r);
 
 }  // namespace ballast

@@ -8,13 +8,13 @@
 
 namespace ballast {
 
-void FatigueParameters::validate() const
+FatigueParameters FatigueParameters::checked(double exponent, double endurance, double hysteresis, double rMin)
 {
-	requirePositive("exponent", exponent);
-	requireNonNegative("endurance", endurance);
-	if (!(endurance < 1.0)) throw ArgumentError("endurance: expected a ratio in [0, 1), got " + formatValue(endurance));
-	requirePositive("hysteresis", hysteresis);
-	if (!(hysteresis < 1.0)) throw ArgumentError("hysteresis: expected a ratio in (0, 1), got " + formatValue(hysteresis));
+	// braces: checked in the order written
+	return FatigueParameters{requireInRange(ranges::fatigueExponent, "exponent", exponent),
+	                         requireInRange(ranges::fatigueEndurance, "endurance", endurance),
+	                         requireInRange(ranges::fatigueHysteresis, "hysteresis", hysteresis),
+	                         requireInRange(ranges::rMin, "rMin", rMin)};
 }
 
 void sampleFatigue(const FatigueParameters& p, double s, GrainFatigue& g)
@@ -40,14 +40,11 @@ void sampleFatigue(const FatigueParameters& p, double s, GrainFatigue& g)
 	}
 }
 
-void evaluateFatigue(const FatigueParameters& p, double rMin, long n, const double* ratio, const double* radii,
-                     GrainFatigue* state, unsigned char* crush)
+void evaluateFatigue(const FatigueParameters& p, long n, const double* ratio, const double* radii, GrainFatigue* state,
+                     unsigned char* crush)
 {
-	p.validate();
-	requireNonNegative("rMin", rMin);
 	for (long g = 0; g < n; ++g) {
-		requireFinite("ratio", g, ratio[g]);
-		if (ratio[g] < 0) requireNonNegative("ratio[" + std::to_string(g) + "]", ratio[g]);
+		requireNonNegative("ratio", g, ratio[g]);
 		requirePositive("radii", g, radii[g]);
 		const GrainFatigue& s = state[g];
 		if (!std::isfinite(s.damage) || s.damage < 0 || (s.rising != 0 && s.rising != 1) || !(s.peaks >= 0))
@@ -57,7 +54,7 @@ void evaluateFatigue(const FatigueParameters& p, double rMin, long n, const doub
 	}
 	for (long g = 0; g < n; ++g) {
 		crush[g] = 0;
-		if (radii[g] < rMin) continue;  // never degrades: no damage either (it would grow without bound)
+		if (radii[g] < p.rMin) continue;  // never degrades: no damage either (it would grow without bound)
 		sampleFatigue(p, ratio[g], state[g]);
 		crush[g] = crushesWithDamage(ratio[g], state[g].damage);
 	}

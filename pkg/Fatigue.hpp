@@ -13,11 +13,23 @@
 
 namespace ballast {
 
-struct FatigueParameters {
-	double exponent;    // Basquin exponent b [-], > 0
-	double endurance;   // peaks below this ratio do no damage [-], in [0, 1)
-	double hysteresis;  // fall (and rise) of s that ends a peak (a valley) [-], in (0, 1)
-	void   validate() const;
+// The fatigue parameters, each within its range (InputCheck.hpp: fatigueExponent, fatigueEndurance,
+// fatigueHysteresis, rMin): `checked` is the only way to build them, so the functions below take them as valid.
+class FatigueParameters {
+public:
+	const double exponent;    // Basquin exponent b [-]
+	const double endurance;   // peaks below this ratio do no damage [-]
+	const double hysteresis;  // fall (and rise) of s that ends a peak (a valley) [-]
+	const double rMin;        // grains with r < rMin never degrade [m] (the crushing rMin)
+
+	// ArgumentError naming the first parameter out of its range, in the order of the arguments.
+	static FatigueParameters checked(double exponent, double endurance, double hysteresis, double rMin);
+
+private:
+	FatigueParameters(double exponent_, double endurance_, double hysteresis_, double rMin_)
+	        : exponent(exponent_), endurance(endurance_), hysteresis(hysteresis_), rMin(rMin_)
+	{
+	}
 };
 
 // Per-grain state, four doubles a grain (row-major (n,4) in the binding and the saved engine state).
@@ -35,9 +47,10 @@ void sampleFatigue(const FatigueParameters& p, double s, GrainFatigue& g);
 // Whether a grain of damage D crushes at ratio s: s > 1 - D.
 inline bool crushesWithDamage(double s, double damage) { return s > 1.0 - damage; }
 
-// For n grains: ratio [-] (finite, >= 0) and radius [m] (> 0) of each; updates the state of the grains
-// with r >= rMin with the sample, then writes crush (0/1): r >= rMin and s > 1 - D.
-void evaluateFatigue(const FatigueParameters& p, double rMin, long n, const double* ratio, const double* radii,
-                     GrainFatigue* state, unsigned char* crush);
+// For n grains: ratio [-] (finite, >= 0), radius [m] (> 0) and state of each (checked: ArgumentError names the
+// grain); updates the state of the grains with r >= rMin with the sample, then writes crush (0/1):
+// r >= rMin and s > 1 - D.
+void evaluateFatigue(const FatigueParameters& p, long n, const double* ratio, const double* radii, GrainFatigue* state,
+                     unsigned char* crush);
 
 }  // namespace ballast

@@ -5,7 +5,8 @@
 
 namespace ballast {
 
-// f_t [Pa] of a grain of radius r [m]; ft0 > 0 [Pa m^m], r > 0, m >= 0 [-].
+// f_t [Pa] of a grain of radius r [m], of ft0 [Pa m^m] and m [-]. Checks nothing: the caller checked
+// ft0 and m against their ranges (InputCheck.hpp; CrushParameters::checked) and r > 0.
 double sizeStrength(double ft0, double r, double m = 1.0);
 
 }  // namespace ballast

@@ -10,10 +10,11 @@
 
 namespace ballast {
 
-// The strength factor w [-] of the grain `key`; modulus k [-] finite, 0 (none) or > 0.
+// The strength factor w [-] of the grain `key`; modulus k [-] 0 (none) or > 0, the caller checked it
+// (InputCheck.hpp: weibullModulus).
 double weibullFactor(std::uint64_t seed, std::uint64_t key, double modulus);
 
-// n factors for keys[0..n).
+// n factors for keys[0..n), of a modulus checked as above.
 void weibullFactors(std::uint64_t seed, long n, const std::uint64_t* keys, double modulus, double* out);
 
 }  // namespace ballast

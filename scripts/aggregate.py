@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Aggregate a study run by scripts/study.py into tables and the paper's figures (ballast.study.aggregate).
+"""Aggregate a study run by scripts/study.py into tables, tests and the paper's figures (ballast.analysis.report).
 
     scripts/aggregate.py results/studies/frequency            -> results/studies/frequency/aggregate/
     scripts/aggregate.py results/studies/Tc --param Tc --out docs/figures/Tc
@@ -7,8 +7,8 @@
 import argparse
 import sys
 
+from ballast.analysis.report import __doc__ as TABLES, aggregate
 from ballast.study import StudyError
-from ballast.study.aggregate import __doc__ as TABLES, aggregate
 
 
 def main(argv=None):

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""What the model options of issue 13 do at the paper's size (ballast.study.choices, docs/strength.md).
+"""What the model options of issue 13 do at the paper's size (ballast.analysis.choices, docs/strength.md).
 
     scripts/choices.py onset docs/studies/criteria-onset       the ft0 of each criterion at the paper's onset
     scripts/choices.py compare docs/studies/choices            comparison.csv and choices.png there
@@ -10,7 +10,7 @@ import json
 import os
 import sys
 
-from ballast.study import choices
+from ballast.analysis import choices
 
 
 def main(argv=None):

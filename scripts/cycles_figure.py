@@ -6,7 +6,7 @@
 import argparse
 import os
 
-from ballast.study import manycycles
+from ballast.analysis import manycycles
 
 
 def main():

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Why delta depends on the crushing period: the T_c study beside its controlled variants
-(ballast.study.mechanisms; issue 14, docs/studies.md).
+(ballast.analysis.mechanisms; issue 14, docs/studies.md).
 
     scripts/tc_mechanisms.py docs/studies/Tc-4Hz docs/studies/Tc-variants --out docs/studies/Tc-variants
 writes mechanisms.csv (per variant and T_c: n, mean, std, standard error of delta, mean crushes, the share of
@@ -14,7 +14,8 @@ import csv
 import os
 import sys
 
-from ballast.study import StudyError, mechanisms
+from ballast.analysis import mechanisms
+from ballast.study import StudyError
 
 
 def writeCsv(rows, path):

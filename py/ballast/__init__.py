@@ -6,7 +6,8 @@ The physics lives in the C++ core ``ballast._ballast`` (arrays in, arrays out); 
 re-exports it. The YADE engines ``BallastCrushEngine`` and ``BallastAbrasionEngine`` (module
 :mod:`ballast.engines`) are attributes of the package too, imported on first use so that
 ``import ballast`` works in a plain Python without YADE; the oedometric test is
-:mod:`ballast.oedometer`, the parameter studies :mod:`ballast.study`.
+:mod:`ballast.oedometer`, the parameter studies :mod:`ballast.study` and their analyses
+:mod:`ballast.analysis`.
 """
 from ._ballast import (abrasionBound, abrasionCheck, contactModulus, crushCheck, effectiveRadius, fabricStress, fatigueCheck,
                        fragmentPattern, grainStresses, hertzPressure, hertzPressureFromForce, keptVolumeFraction,

@@ -1,8 +1,8 @@
 """What the engines read from YADE at each check, read in C++ wherever YADE offers it.
 
 * The grain table (ids, radii, group masks of the dynamic spheres) is cached and rebuilt only when
-  the scene changed: its signature is a token of the scene (kept in O.tags, new after O.reset()),
-  the body count and ``utils.getSpheresVolume()`` (C++), so any added, erased or resized sphere
+  the scene changed: its signature is the scene's epoch (:func:`ballast.runtime.epoch`, new after
+  O.reset() or O.load()), the body count and ``utils.getSpheresVolume()`` (C++), so any added, erased or resized sphere
   invalidates it, and so does O.iter going back (O.load). The engines update it in place after
   their own changes. After changing which bodies are dynamic by hand, call :func:`refresh`.
 * Fabric stresses come from ``utils.bodyStressTensors()`` (YADE's C++ Love-Weber stress per body,
@@ -12,13 +12,11 @@
   few bodies (:func:`contactsOf`) when a bound has ruled the others out.
 * The stress tensors of one step are cached, so two engines checking at the same step read them once.
 """
-import uuid
-
 import numpy as np
 from yade import O, utils
 from yade.wrapper import Sphere
 
-from . import _ballast
+from . import _ballast, runtime
 
 
 class GrainTable:
@@ -95,26 +93,16 @@ def grains():
     return _table
 
 
-_sig = (None, None)           # ((scene token, O.iter, body count), signature)
+_sig = (None, None)           # ((scene epoch, O.iter, body count), signature)
 _stressCache = (None, None)  # ((O.iter, scene signature), all bodies' tensors)
-_TOKEN = 'ballast.scene'
-
-
-def _sceneToken():
-    """A random token kept in O.tags: a new scene (O.reset(), O.load() of another file) has another,
-    so what was read from one scene is never taken for another at the same step number."""
-    try:
-        return O.tags[_TOKEN]
-    except KeyError:
-        O.tags[_TOKEN] = uuid.uuid4().hex
-        return O.tags[_TOKEN]
 
 
 def _signature():
-    """Scene token, body count and sphere volume (C++), computed once per step: both engines of a
+    """Scene epoch (ballast.runtime: new after O.reset() or O.load()), body count and sphere volume (C++),
+    computed once per step: both engines of a
     step share it. Changes within a step are the engines' own, and they call invalidate()."""
     global _sig
-    key = (_sceneToken(), O.iter, len(O.bodies))
+    key = (runtime.epoch(), O.iter, len(O.bodies))
     if _sig[0] != key:
         _sig = (key, (key[0], len(O.bodies), utils.getSpheresVolume()))
     return _sig[1]

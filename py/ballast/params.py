@@ -6,6 +6,7 @@ turned into a value by :meth:`Param.fromText` and then validated like any Python
 This module needs no YADE: the study runner reads the declarations in plain ``/usr/bin/python3``.
 """
 import ast
+from collections.abc import Mapping
 import math
 import numbers
 import os
@@ -134,14 +135,6 @@ def intBetween(lo, hi):
 INT64_MAX, INT32_MAX = 2 ** 63 - 1, 2 ** 31 - 1
 
 
-def weibullModulus(v):
-    """0 (no scatter) or a modulus in [1, 50]: below 1 the scatter spans orders of magnitude."""
-    v = _number(v)
-    if not (v == 0 or 1 <= v <= 50):
-        raise ValueError
-    return v
-
-
 def positiveInt(v):
     v = _integer(v)
     if v < 1:
@@ -193,6 +186,28 @@ def choice(*names):
     return check
 
 
+def oneOf(names):
+    """The names in words: "'a', 'b' or 'c'"."""
+    quoted = ['%r' % (n,) for n in names]
+    return ', '.join(quoted[:-1]) + ' or ' + quoted[-1] if len(quoted) > 1 else quoted[0]
+
+
+def coreRange(name):
+    """(check, words) of the engine parameter `name` from the C++ core's declaration of its range (the one
+    source: pkg/InputCheck.hpp, exported as _ballast.parameterRanges()), so that Python refuses what C++ refuses,
+    in the same words."""
+    lower, upper, lowerClosed, upperClosed, integer, zeroAllowed, words = _ballast.parameterRanges()[name]
+
+    def check(v):
+        v = _integer(v) if integer else _number(v)
+        above = lower <= v if lowerClosed else lower < v
+        below = v <= upper if upperClosed else v < upper
+        if not (above and below or zeroAllowed and v == 0):
+            raise ValueError
+        return v
+    return check, words
+
+
 def requireWritableDir(owner, name, path):
     """Creates the folder `path` of parameter `name` if needed and writes a probe file in it, so that a run
     fails before its work, not after it, when its results could not be stored. Raises ParamError."""
@@ -240,8 +255,7 @@ def docTable(table):
 NUMBER_POSITIVE, NUMBER_NONNEGATIVE = 'a finite number > 0', 'a finite number >= 0'
 
 COMMON = {
-    'rMin': Param(0.0, 'm', 'grains with a radius below rMin never degrade (fragments included)',
-                  nonNegative, NUMBER_NONNEGATIVE),
+    'rMin': Param(0.0, 'm', 'grains with a radius below rMin never degrade (fragments included)', *coreRange('rMin')),
     'mask': Param(0, '-', 'groupMask selecting the checked grains (dynamic spheres); 0 = all', intBetween(0, INT32_MAX),
                   'an integer in [0, 2^31 - 1] (a YADE groupMask)'),
     'adjustDt': Param(True, '-', 'after grains shrink, scale O.dt by the drop of utils.PWaveTimeStep() '
@@ -270,24 +284,22 @@ PERIODIC = {
 }
 
 CRUSH = dict({
-    'ft0': Param(None, 'Pa m^m', 'reference strength f_t0 of eq. 4, f_t = ft0 / r^m', positive, NUMBER_POSITIVE),
+    'ft0': Param(None, 'Pa m^m', 'reference strength f_t0 of eq. 4, f_t = ft0 / r^m', *coreRange('ft0')),
     'm': Param(1.0, '-', 'size-effect exponent of eq. 4 (the paper: 1; 3 / m is the Weibull modulus of the size '
-               'effect, 1 at m = 3)', between(0, 3, closedHi=True), 'a number in [0, 3]'),
+               'effect, 1 at m = 3)', *coreRange('m')),
     'pattern': Param(6, '-', 'fragment layout (Fig. 1): 4 (tetrahedral), 6 (octahedral), 14, or planar4 '
                      '(four in a plane, the paper\'s 70 % loss)', pattern, "4, 6, 14, 'tetra4', 'planar4', "
                      "'octa6' or 'fill14'"),
-    'seed': Param(0, '-', 'seed of the random orientation of fragments (reproducible)', intBetween(0, INT64_MAX),
-                  'an integer in [0, 2^63 - 1]'),
+    'seed': Param(0, '-', 'seed of the random orientation of fragments (reproducible)', *coreRange('seed')),
     # beyond the paper (docs/strength.md): which stress crushes a grain, and scattered strengths
     'criterion': Param('vonMises', '-', "the stress compared with f_t: 'vonMises' (eq. 2, the paper), "
                        "'maxContactForce' (the largest normal contact force over d^2, de Bono & McDowell 2016) or "
                        "'majorPrincipal' (the largest principal compressive stress of eq. 3)",
-                       choice('vonMises', 'maxContactForce', 'majorPrincipal'),
-                       "'vonMises', 'maxContactForce' or 'majorPrincipal'", text),
+                       choice(*_ballast.criterionNames()), oneOf(_ballast.criterionNames()), text),
     'weibullModulus': Param(0.0, '-', 'Weibull modulus k of the grains\' strengths: each grain\'s f_t is ft0 / r^m '
                             'times (-ln U)^(1/k), U uniform from (seed, body id), so eq. 4 is the characteristic '
-                            'strength at every size; 0: every grain exactly ft0 / r^m (the paper)', weibullModulus,
-                            '0 or a number in [1, 50]'),
+                            'strength at every size; 0: every grain exactly ft0 / r^m (the paper)',
+                            *coreRange('weibullModulus')),
     'keep': Param('none', '-', "what a replacement keeps besides the fragments' own volume: 'none' (the paper: "
                   "the mass of the lost volume is lost), 'mass' (the fragments' mass and inertia are scaled up "
                   "so that the parent's mass and momentum are kept), 'volume' (the fragments grow in place back "
@@ -306,18 +318,16 @@ CRUSH = dict({
                      '(docs/fatigue.md); fragments start undamaged',
                      boolean, 'True or False', flag),
     'fatigueExponent': Param(30.0, '-', 'Basquin exponent b: a constant peak s_p >= fatigueEndurance crushes a '
-                             'grain after N_f = s_p^-b peaks', between(1, 100, closedHi=True),
-                             'a number in [1, 100]'),
-    'fatigueEndurance': Param(0.5, '-', 'endurance ratio: peaks of s below it do no damage', between(0, 1),
-                              'a number in [0, 1)'),
+                             'grain after N_f = s_p^-b peaks', *coreRange('fatigueExponent')),
+    'fatigueEndurance': Param(0.5, '-', 'endurance ratio: peaks of s below it do no damage',
+                              *coreRange('fatigueEndurance')),
     'fatigueHysteresis': Param(0.05, '-', 'a peak of s ends when s falls this much below it, and the next rise '
-                               'starts when s climbs this much above its minimum', between(0.001, 0.5, closedHi=True),
-                               'a number in [0.001, 0.5]'),
+                               'starts when s climbs this much above its minimum', *coreRange('fatigueHysteresis')),
 }, **COMMON)
 
 ABRASION = dict({
     'strength': Param(None, 'Pa', 'contact pressure that abrades a grain (eq. 6 compares the maximum Hertz '
-                      'pressure p0 of eq. 7 with it; kept apart from ft0, which is in Pa m)', positive, NUMBER_POSITIVE),
+                      'pressure p0 of eq. 7 with it; kept apart from ft0, which is in Pa m)', *coreRange('strength')),
     'gamma': Param(0.9, '-', 'radius reduction factor: r_new = gamma r_old (an abrasion removes a surface layer, '
                    'at most half the radius)', between(0.5, 1), 'a number in [0.5, 1)'),
     'prefilter': Param(True, '-', 'read only the contacts of grains whose bound on p0 exceeds the strength (same '
@@ -331,3 +341,60 @@ ABRASION = dict({
                            'candidates all contacts are read in one pass instead (reading grain by grain costs '
                            'about 1.6 times more per grain)', unitInterval, 'a number in [0, 1]'),
 }, **COMMON)
+
+
+# ---------------------------------------------------------------- checked parameters as one value
+class Parameters(Mapping):
+    """The checked parameters of an experiment: frozen (a new value is a new object, checked again), read
+    as p['f'] or p.f; subclasses add the derived values (the step, the crushing period...). Built only by
+    :meth:`check`, the one place the declarations are applied."""
+
+    OWNER = 'experiment'
+    PARAMS = {}
+
+    def __init__(self, values, _checked=False):
+        if not _checked:
+            raise TypeError('%s: build parameters with %s.check(values)' % (self.OWNER, type(self).__name__))
+        object.__setattr__(self, '_values', dict(values))
+
+    @classmethod
+    def check(cls, values, text=False):
+        """The defaults updated with `values`, each checked (text=True: strings are text from a command line
+        or a table), then :meth:`crossCheck`. Raises ParamError naming the parameter, the value and what is
+        allowed."""
+        if isinstance(values, cls):
+            return values
+        p = cls(validateAll(cls.OWNER, cls.PARAMS, dict(values), text), _checked=True)
+        p.crossCheck()
+        return p
+
+    def crossCheck(self):
+        """Checks between parameters (subclasses); each error names the parameter at fault."""
+
+    def bad(self, name, why):
+        raise ParamError(name, '%s: %s = %r is not allowed: %s' % (self.OWNER, name, self[name], why))
+
+    def replace(self, **changes):
+        """A copy with some values changed, checked again."""
+        return type(self).check(dict(self._values, **changes))
+
+    def __getitem__(self, name):
+        return self._values[name]
+
+    def __getattr__(self, name):
+        try:
+            return self._values[name]
+        except KeyError:
+            raise AttributeError('%s has no parameter %r' % (self.OWNER, name)) from None
+
+    def __setattr__(self, name, value):
+        raise AttributeError('%s: parameters are frozen; use replace(%s=...)' % (self.OWNER, name))
+
+    def __iter__(self):
+        return iter(self._values)
+
+    def __len__(self):
+        return len(self._values)
+
+    def __repr__(self):
+        return '%s(%s)' % (type(self).__name__, ', '.join('%s=%r' % kv for kv in self._values.items()))

@@ -63,8 +63,14 @@ TEST(CrushCriterion, GrainUnderThreeOrthogonalPairs)
 
 TEST(CrushCriterion, Names)
 {
-	for (const char* n : {"vonMises", "maxContactForce", "majorPrincipal"})
-		EXPECT_EQ(std::string(criterionName(parseCriterion(n))), n);
+	// the paper's criterion first; every name reads back to its criterion
+	ASSERT_EQ(criteria().size(), 3u);
+	EXPECT_EQ(criteria()[0], Criterion::VonMises);
+	const char* names[] = {"vonMises", "maxContactForce", "majorPrincipal"};
+	for (size_t i = 0; i < criteria().size(); ++i) {
+		EXPECT_EQ(std::string(criterionName(criteria()[i])), names[i]);
+		EXPECT_EQ(parseCriterion(names[i]), criteria()[i]);
+	}
 	EXPECT_EQ(ballast_test::messageOf([] { parseCriterion("tresca"); }),
 	          "criterion: expected 'vonMises', 'maxContactForce' or 'majorPrincipal', got 'tresca'");
 }

@@ -24,15 +24,22 @@ long crushCycle(const FatigueParameters& p, double sPeak, int perCycle, long max
 		for (int k = 0; k < perCycle; ++k) {
 			const double  s = sPeak * (1 - std::cos(2 * kPi * k / perCycle)) / 2;
 			unsigned char crush;
-			evaluateFatigue(p, 0.0, 1, &s, &r, &g, &crush);
+			evaluateFatigue(p, 1, &s, &r, &g, &crush);
 			if (crush) return c;
 		}
 	return 0;
 }
 
-std::string messageOf(const FatigueParameters& p)
+// Parameters with rMin = 0: every grain degrades.
+FatigueParameters params(double exponent, double endurance, double hysteresis)
 {
-	return ballast_test::messageOf([&] { p.validate(); });
+	return FatigueParameters::checked(exponent, endurance, hysteresis, 0.0);
+}
+
+// The message of FatigueParameters::checked, the one check of the parameters, or "" when they are accepted.
+std::string messageOf(double exponent, double endurance, double hysteresis, double rMin = 0.0)
+{
+	return ballast_test::messageOf([&] { FatigueParameters::checked(exponent, endurance, hysteresis, rMin); });
 }
 
 }  // namespace
@@ -43,7 +50,7 @@ TEST(Fatigue, ConstantRatioCrushesInTheCycleWorkedOutByHand)
 	// i.e. once D > 0.4, i.e. after more than N_f = 0.6^-8 = 59.54 peaks (Basquin's life, as Miner's rule
 	// says): k* = 60 peaks, counted as s falls in cycle 60 (1 - D = 0.5969 is then above the falling s);
 	// in cycle 61 s rises past 0.5969 and the grain crushes (never in one cycle: 0.6 < 1).
-	const FatigueParameters p{8.0, 0.5, 0.05};
+	const FatigueParameters p = params(8.0, 0.5, 0.05);
 	GrainFatigue            g;
 	EXPECT_EQ(crushCycle(p, 0.6, 100, 1000, g), 61);
 	EXPECT_EQ(g.peaks, 60);
@@ -53,7 +60,7 @@ TEST(Fatigue, ConstantRatioCrushesInTheCycleWorkedOutByHand)
 TEST(Fatigue, CountsLoadCyclesNotChecks)
 {
 	// Any even number of samples per cycle hits the peak: 4, 8 or 1000 checks a cycle, the same cycle 61.
-	const FatigueParameters p{8.0, 0.5, 0.05};
+	const FatigueParameters p = params(8.0, 0.5, 0.05);
 	for (int perCycle : {4, 8, 1000}) {
 		GrainFatigue g;
 		EXPECT_EQ(crushCycle(p, 0.6, perCycle, 1000, g), 61) << perCycle;
@@ -67,7 +74,7 @@ TEST(Fatigue, CountsLoadCyclesNotChecks)
 
 TEST(Fatigue, BelowTheEnduranceRatioNoDamage)
 {
-	const FatigueParameters p{8.0, 0.5, 0.05};
+	const FatigueParameters p = params(8.0, 0.5, 0.05);
 	GrainFatigue            g;
 	EXPECT_EQ(crushCycle(p, 0.49, 50, 5000, g), 0);
 	EXPECT_EQ(g.damage, 0.0);
@@ -77,7 +84,7 @@ TEST(Fatigue, BelowTheEnduranceRatioNoDamage)
 TEST(Fatigue, RipplesSmallerThanTheHysteresisAreNotCycles)
 {
 	// s ripples between 0.8 and 0.78 (a fall of 0.02 < 0.05) a thousand times, then falls to 0: one peak.
-	const FatigueParameters p{4.0, 0.5, 0.05};
+	const FatigueParameters p = params(4.0, 0.5, 0.05);
 	GrainFatigue            g;
 	for (int k = 0; k < 1000; ++k) {
 		sampleFatigue(p, 0.8, g);
@@ -102,35 +109,48 @@ TEST(Fatigue, CrushRule)
 	EXPECT_FALSE(crushesWithDamage(0.5, 0.5));   // s = 1 - D: not above
 	EXPECT_TRUE(crushesWithDamage(0.51, 0.5));
 	// rMin: a damaged grain below rMin never crushes
-	const FatigueParameters p{8.0, 0.5, 0.05};
+	const FatigueParameters below = FatigueParameters::checked(8.0, 0.5, 0.05, 0.01), all = params(8.0, 0.5, 0.05);
 	GrainFatigue            g;
 	g.damage = 0.9;
 	const double  s = 0.5, r = 0.005;
 	unsigned char crush;
-	evaluateFatigue(p, 0.01, 1, &s, &r, &g, &crush);
+	evaluateFatigue(below, 1, &s, &r, &g, &crush);
 	EXPECT_EQ(crush, 0);
 	EXPECT_EQ(g.extreme, 0.0);  // below rMin the state is not even sampled: no damage grows there
-	evaluateFatigue(p, 0.0, 1, &s, &r, &g, &crush);
+	evaluateFatigue(all, 1, &s, &r, &g, &crush);
 	EXPECT_EQ(crush, 1);
 }
 
-TEST(Fatigue, BadInputNamesTheArgument)
+TEST(Fatigue, ParametersAreCheckedOnceAgainstTheirRanges)
 {
-	EXPECT_NE(messageOf({0.0, 0.5, 0.05}).find("exponent"), std::string::npos);
-	EXPECT_NE(messageOf({8.0, 1.0, 0.05}).find("endurance: expected a ratio in [0, 1), got 1"), std::string::npos);
-	EXPECT_NE(messageOf({8.0, 0.5, 1.5}).find("hysteresis: expected a ratio in (0, 1), got 1.5"), std::string::npos);
-	EXPECT_NE(messageOf({NAN, 0.5, 0.05}).find("exponent"), std::string::npos);
-	const FatigueParameters p{8.0, 0.5, 0.05};
+	// b in [1, 100], endurance in [0, 1), hysteresis in [0.001, 0.5], rMin >= 0 (InputCheck.hpp, the ranges
+	// ballast.params declares too); the message names the argument, the value and the range.
+	EXPECT_EQ(messageOf(0.5, 0.5, 0.05), "exponent: expected a number in [1, 100], got 0.5");
+	EXPECT_EQ(messageOf(101, 0.5, 0.05), "exponent: expected a number in [1, 100], got 101");
+	EXPECT_EQ(messageOf(NAN, 0.5, 0.05), "exponent: expected a number in [1, 100], got nan");
+	EXPECT_EQ(messageOf(8.0, 1.0, 0.05), "endurance: expected a number in [0, 1), got 1");
+	EXPECT_EQ(messageOf(8.0, -0.1, 0.05), "endurance: expected a number in [0, 1), got -0.1");
+	EXPECT_EQ(messageOf(8.0, 0.5, 1.5), "hysteresis: expected a number in [0.001, 0.5], got 1.5");
+	EXPECT_EQ(messageOf(8.0, 0.5, 0.0009), "hysteresis: expected a number in [0.001, 0.5], got 0.0009");
+	EXPECT_EQ(messageOf(8.0, 0.5, 0.05, -1.0), "rMin: expected a finite number >= 0, got -1");
+	EXPECT_EQ(messageOf(0.0, 2.0, 0.0, -1.0).rfind("exponent", 0), 0u);  // the first bad one
+	// the ends of the closed ranges are allowed
+	for (double b : {1.0, 100.0})
+		for (double h : {0.001, 0.5})
+			EXPECT_EQ(messageOf(b, 0.0, h), "") << b << " " << h;
+}
+
+TEST(Fatigue, BadGrainValuesNameTheGrain)
+{
+	const FatigueParameters p = params(8.0, 0.5, 0.05);
 	GrainFatigue            g;
 	unsigned char           crush;
-	const double            r = 0.02, bad = -0.1;
-	EXPECT_THROW(evaluateFatigue(p, 0.0, 1, &bad, &r, &g, &crush), ArgumentError);
+	const double            r = 0.02, bad = -0.1, s = 0.5, r0 = 0.0;
+	EXPECT_EQ(ballast_test::messageOf([&] { evaluateFatigue(p, 1, &bad, &r, &g, &crush); }),
+	          "ratio[0]: expected a finite number >= 0, got -0.1");
+	EXPECT_EQ(ballast_test::messageOf([&] { evaluateFatigue(p, 1, &s, &r0, &g, &crush); }),
+	          "radii[0]: expected a finite number > 0, got 0");
 	g.damage = -1;
-	const double s = 0.5;
-	try {
-		evaluateFatigue(p, 0.0, 1, &s, &r, &g, &crush);
-		ADD_FAILURE() << "no error for a negative damage";
-	} catch (const ArgumentError& e) {
-		EXPECT_NE(std::string(e.what()).find("state[0]"), std::string::npos) << e.what();
-	}
+	EXPECT_EQ(ballast_test::messageOf([&] { evaluateFatigue(p, 1, &s, &r, &g, &crush); }),
+	          "state[0]: expected damage >= 0, rising 0 or 1 and peaks >= 0, got (-1, 0, 1, 0)");
 }

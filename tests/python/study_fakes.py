@@ -1,5 +1,6 @@
-"""Helpers of the ballast.study tests. A stand-in for yade for the tests that need no simulation
-(test_study_runner.py, test_study_study.py): it keeps the oedometer's command-line contract,
+"""Helpers of the ballast.study and ballast.analysis tests: a fabricated study directory
+(fabricateStudy), and a stand-in for yade for the tests that need no simulation (test_study_runner.py,
+test_study_study.py): it keeps the oedometer's command-line contract,
 
     fake-yade [--nice=N] -n -x SCRIPT --results DIR --runId ID --packingDir DIR   (YADE_BATCH=table:line)
 
@@ -7,6 +8,7 @@ builds the packing its row needs when it is not stored, and writes DIR/ID/summar
 seen.json (what it was given). The environment variable FAKE (a '!FAKE' column of the table) makes
 it fail (exit 3, leaving a partial output), hang (with a child process; both pids in pids.json),
 end without a summary, with a summary cut in half (exit 0 both), or be killed by SIGKILL mid-run."""
+import json
 import os
 import signal
 import socket
@@ -15,17 +17,19 @@ import pytest
 
 FAKE_YADE = r'''#!/usr/bin/python3
 import json, os, signal, subprocess, sys, time
-from ballast.oedometer.parameters import check, packingKey
+from ballast.experiments import declaration
 
 argv = sys.argv[1:]
 script = argv[argv.index('-x') + 1]
 opts = dict(zip(argv[argv.index('-x') + 2::2], argv[argv.index('-x') + 3::2]))
+oedometer = declaration('oedometer')
+# the row split by hand: ballast.study.table.tableRow would boot YADE's reader, 0.5 s a fake run
 table, line = os.environ['YADE_BATCH'].rsplit(':', 1)
 with open(table) as fh:
     lines = fh.read().split('\n')
 rows = [l.split() for l in lines if l.strip() and not l.startswith('#')]
 cells = dict(zip([h[:-1] if h.endswith('!') else h for h in rows[0]], lines[int(line) - 1].split()))
-p = check({k: v for k, v in cells.items() if not k.startswith('!') and k != 'description'}, text=True)
+p = dict(oedometer.check({k: v for k, v in cells.items() if not k.startswith('!') and k != 'description'}, text=True))
 out = os.path.join(opts['--results'], opts['--runId'])
 os.makedirs(out)
 with open(os.path.join(out, 'seen.json'), 'w') as fh:
@@ -52,10 +56,10 @@ if mode == 'truncated':
 if mode == 'killed':
     print('step 1200, t = 0.12 s', flush=True)  # a progress line: not why it ended
     os.kill(os.getpid(), signal.SIGKILL)
-packing = os.path.join(opts['--packingDir'], packingKey(p)[1])
+packing = os.path.join(opts['--packingDir'], oedometer.sampleKey(p))
 if not os.path.exists(packing):
     with open(packing + '.tmp', 'w') as fh:
-        json.dump({'key': packingKey(p)[0], 'builtBy': opts['--runId']}, fh)
+        json.dump({'key': {'seed': p['seed']}, 'builtBy': opts['--runId']}, fh)
     os.replace(packing + '.tmp', packing)
 with open(packing) as fh:
     builtBy = json.load(fh)['builtBy']
@@ -65,6 +69,42 @@ with open(os.path.join(out, 'summary.json'), 'w') as fh:
     json.dump({'params': p, 'peakForce': 1000. * p['f'] + p['seed'], 'deltaAtPeak': 1e-3 * p['seed'], 'nCrushed': p['seed'],
                'packingFile': packing, 'packingBuiltBy': builtBy}, fh)
 '''
+
+
+# (seed, Tc [s], delta at peak [m], crushed) of fabricateStudy; seed 3 at Tc = 0.01 and seeds 2-3 at 0.04 did not finish
+RUNS = [(1, 0, 0.050, 10), (2, 0, 0.056, 14), (3, 0, 0.047, 9), (1, 1e-4, 0.040, 7), (2, 1e-4, 0.031, 3), (3, 1e-4, 0.052, 12),
+        (1, 0.01, 0.022, 2), (2, 0.01, 0.025, 4), (1, 0.04, 0.020, 1)]
+MISSING = [(3, 0.01), (2, 0.04), (3, 0.04)]
+
+
+def runId(seed, tc, **more):
+    """The run id fabricateStudy gives a run: seed=1,Tc=0.01[,more...]."""
+    return ','.join('%s=%s' % kv for kv in [('seed', seed), ('Tc', tc)] + sorted(more.items()))
+
+
+def fabricateStudy(d, runs=RUNS, missing=MISSING, more=None, params=True, code=('a' * 40,)):
+    """A study directory as Study.run leaves it, without a simulation: study.json and per finished run
+    summary.json (deltaAtPeak, deltaMax = 2 deltaAtPeak, peakForce, nCrushed, nAbraded, the parameters
+    unless params=False) and row.json (the code sha1s of `code` in turn). `more` adds columns (name ->
+    value of the i-th run). Returns the directory."""
+    os.makedirs(str(d), exist_ok=True)
+    rows = []
+    for i, (seed, tc) in enumerate([r[:2] for r in runs] + missing):
+        extra = {k: str(v(i)) for k, v in (more or {}).items()}
+        rows.append({'line': i + 2, 'runId': runId(seed, tc, **extra), 'row': dict({'seed': str(seed), 'Tc': str(tc)}, **extra)})
+    for i, (seed, tc, delta, crushed) in enumerate(runs):
+        run = os.path.join(str(d), 'runs', rows[i]['runId'])
+        os.makedirs(run)
+        s = {'deltaAtPeak': delta, 'deltaMax': 2 * delta, 'peakForce': 1.5e6, 'nCrushed': crushed, 'nAbraded': 0}
+        if params:
+            s['params'] = dict({'seed': seed, 'Tc': float(tc)}, **{k: float(v(i)) for k, v in (more or {}).items()})
+        with open(os.path.join(run, 'summary.json'), 'w') as fh:
+            json.dump(s, fh)
+        with open(os.path.join(run, 'row.json'), 'w') as fh:
+            json.dump({'codeSha1': code[i % len(code)]}, fh)
+    with open(os.path.join(str(d), 'study.json'), 'w') as fh:
+        json.dump({'table': 'Tc.table', 'columns': ['seed', 'Tc'] + list(more or {}), 'rows': rows}, fh)
+    return str(d)
 
 
 def writeFakeYade(directory):

@@ -1,4 +1,4 @@
-"""Seeded fuzz test of the binding pkg/python/_ballast.cpp (issue 15): every function is called with random
+"""Seeded fuzz test of the binding pkg/python/ (issue 15): every function that takes arguments is called with random
 valid and invalid arguments (shapes, dtypes, NaN/inf, huge and tiny values, negative radii, NumPy scalars,
 objects of the wrong type). Each call must either return finite results of the documented shape, or raise
 TypeError/ValueError whose message starts with the name of one of the call's arguments ("radii[3]: ...",
@@ -302,7 +302,7 @@ def effectiveRadius(g):
 
 
 def sizeStrength(g):
-    kw = broadcastArguments(g, ['ft0', 'radius', 'm'], lambda k, n: g.rng.uniform(0, 5, n) if k == 'm' else g.magnitude(n))
+    kw = broadcastArguments(g, ['ft0', 'radius', 'm'], lambda k, n: g.rng.uniform(0, 3, n) if k == 'm' else g.magnitude(n))
     return kw, elementwiseCheck(kw, lambda ft0, r, m: ft0 / r ** m, rtol=1e-10)  # pow: a few ulps of r^m
 
 
@@ -405,8 +405,8 @@ def fatigueCheck(g):
     state = np.column_stack([g.rng.uniform(0, 1, n) * (g.rng.random(n) < 0.5), g.rng.uniform(0, 1.5, n),
                              g.rng.integers(0, 2, n), g.rng.integers(0, 5, n)]).astype(float).reshape(n, 4)
     kw = dict(ratio=g.array(g.rng.uniform(0, 1.5, n)), radii=g.array(g.magnitude(n)), state=g.array(state),
-              exponent=g.number(g.pick([1.0, 2.0, 8.0, 300.0])), endurance=g.number(g.rng.uniform(0, 1)),
-              hysteresis=g.number(g.rng.uniform(0.01, 0.99)), rMin=g.number(g.pick([0.0, 1e-3])))
+              exponent=g.number(g.pick([1.0, 2.0, 8.0, 100.0])), endurance=g.number(g.rng.uniform(0, 1)),
+              hysteresis=g.number(g.rng.uniform(0.001, 0.5)), rMin=g.number(g.pick([0.0, 1e-3])))
 
     def check(out):
         st, crush = out
@@ -555,9 +555,13 @@ FUNCTIONS = {'fabricStress': fabricStress, 'grainStresses': grainStresses, 'vonM
              'placeFragments': placeFragments, 'matricesToArray': matricesToArray, '_fastMatrixPath': fastMatrixPath}
 
 
+# functions without arguments: nothing to fuzz (tests/python/test__ballast_InputCheck.py, _CrushCriterion.py)
+NO_ARGUMENTS = {'parameterRanges', 'criterionNames'}
+
+
 def test_every_function_of_the_binding_is_fuzzed():
     public = {k for k in dir(B) if not k.startswith('__')}
-    assert public == set(FUNCTIONS)
+    assert public == set(FUNCTIONS) | NO_ARGUMENTS
 
 
 def finite(out):

@@ -134,11 +134,11 @@ def test_half_load_table_is_the_sweep():
 
 def test_half_load_sweep_is_the_first_quarter_of_the_fig4_runs():
     # the same packing, engines and steps up to Fmax/2: the sweep's ratio is the Fig. 4 record's
-    from ballast.study.aggregate import StudyData
+    from ballast.study import StudyData
     with open(os.path.join(ROOT, 'docs', 'studies', 'halfload', 'runs.csv'), newline='') as fh:
         sweep = {(int(r['seed [-]']), float(r['f [Hz]'])): r['stressRatioAtHalfLoad [-]'] for r in csv.DictReader(fh)
                  if r['stressRatioAtHalfLoad [-]'] and r['damping [-]'] == '0.2'}
-    fig4 = {(r['seed'], r['value']): r['summary']['stressRatioAtHalfLoad']
+    fig4 = {(r.seed, r.value): r.summary['stressRatioAtHalfLoad']
             for r in StudyData(os.path.join(ROOT, 'docs', 'studies', 'frequency')).runs}
     both = [k for k in sweep if fig4.get(k) is not None]
     assert len(both) >= 12

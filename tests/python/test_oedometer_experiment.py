@@ -274,6 +274,25 @@ def test_reopen_finished_run_and_load_on(strong, root):
     assert np.max(second[:, 1]) == pytest.approx(FMAX, abs=TOL_PEAK * FMAX)  # the second peak of eq. 8
 
 
+def test_reopen_read_only_creates_no_folder_and_the_state_is_one_key(strong, root):
+    """readOnly=True: the same summary, no run directory, no file written; the saved scene holds one
+    ballast key in O.tags (ballast.runtime's document), whose objects are the run's pieces and engines."""
+    from yade import O
+    from ballast import runtime
+    run, s = strong[:2]
+    results = os.path.join(root, 'inspected')
+    again = Oedometer.reopen(os.path.join(run.out, 'state-end.yade.gz'), readOnly=True, results=results)
+    assert again.out is None and not os.path.exists(results)
+    assert again.summary()['deltaMax'] == s['deltaMax'] and again.summary()['nCrushed'] == s['nCrushed']
+    with pytest.raises(RuntimeError, match='read-only'):
+        again.dir.create()
+    assert [k for k in O.tags.keys() if k.startswith('ballast')] == [runtime.TAG]
+    types = sorted(o['type'] for o in json.loads(O.tags[runtime.TAG])['objects'].values())
+    for t in ('BallastAbrasionEngine', 'BallastCrushEngine', 'Oedometer', 'OedometerOutputs', 'OedometerRig',
+              'PlateLoad', 'Phases', 'RunDirectory', 'StoredPacking'):
+        assert t in types, types
+
+
 def test_reopen_refuses_physics_changes(strong):
     with pytest.raises(TypeError, match='ft0'):
         Oedometer.reopen(os.path.join(strong[0].out, 'state-end.yade.gz'), ft0=1.0)
@@ -410,7 +429,7 @@ def test_a_run_whose_outputs_fail_keeps_its_state_and_says_how_to_get_them(stron
     assert "Oedometer.reopen(%r)" % end in capsys.readouterr().out
     monkeypatch.undo()
     e = Oedometer.reopen(end, results=os.path.join(root, 'broken'), runId='rebuilt')
-    e.outputs.finish(e, e.summary())
+    e.outputs.finish(e.summary())
     with open(os.path.join(e.out, 'summary.json')) as fh:
         assert json.load(fh)['cycles'] == pytest.approx(1, rel=1e-3)
 

@@ -9,7 +9,7 @@ import pytest
 pytest.importorskip('yade')
 from yade import O, utils  # noqa: E402
 
-from ballast.oedometer import callbacks, check, scene  # noqa: E402
+from ballast.oedometer import check, scene  # noqa: E402
 from ballast.oedometer.loadcurve import eq8, loadCurve  # noqa: E402
 from ballast.oedometer.loading import DisplacementLoad, PlateLoad, ServoLoad  # noqa: E402
 
@@ -21,18 +21,11 @@ TOL_APPLIED = 1e-6    # [-] of Fmax: the plate's applied force against eq. 8 (in
 
 
 class OneGrain:
-    """What a load needs of an experiment: parameters, grains, and being the live one."""
+    """What a load needs: parameters and the rig (the grain is the scene's only sphere)."""
 
     def __init__(self, mode, **kw):
         self.p = check(dict({'Fmax': FMAX, 'f': F, 'vMax': 1.0, 'loadMode': mode}, **kw))
         self.loading = {'plate': PlateLoad, 'servo': ServoLoad, 'displacement': DisplacementLoad}[mode]()
-
-    def grainArrays(self):
-        b = O.bodies[self.grain]
-        return np.array([tuple(b.state.pos)]), np.array([b.shape.radius]), np.array([b.state.mass])
-
-    def ownsScene(self):
-        return True
 
 
 def oneGrain(mode, **kw):
@@ -45,8 +38,7 @@ def oneGrain(mode, **kw):
     O.bodies[exp.grain].state.blockedDOFs = 'xyXYZ'  # only the axis: the statics are along z
     O.engines = scene.engines(damping=0.2, law=exp.p['law'])
     O.dt = 0.5 * utils.PWaveTimeStep()
-    callbacks.setLive(exp)
-    exp.loading.start(exp, steel)
+    exp.loading.start(exp.p, scene.Rig(None, ballast, steel))
     assert exp.loading.z0 == pytest.approx(2 * R, rel=1e-12)  # seated on the top of the grain
     return exp, floor
 
@@ -56,7 +48,7 @@ def test_plate_follows_eq8_on_one_grain(mode, law):
     exp, floor = oneGrain(mode, law=law)
     names = [type(e).__name__ for e in O.engines]
     assert names.index('NewtonIntegrator') == names.index(
-        'InterpolatingDirectedForceEngine' if mode == 'plate' else 'PyRunner') + 1  # the load acts before Newton
+        'InterpolatingDirectedForceEngine' if mode == 'plate' else 'Callback') + 1  # the load acts before Newton
     t, Fp, Fa, Ff, d = [], [], [], [], []
     steps = int(1 / F / O.dt)
     for _ in range(200):
@@ -79,7 +71,6 @@ def test_plate_follows_eq8_on_one_grain(mode, law):
     weight = O.bodies[exp.grain].state.mass * 9.81
     assert np.max(np.abs(Ff - Fp - weight)[seated]) <= TOL_STATICS * FMAX
     assert d[np.argmax(Fp)] > 0  # the plate went down into the grain
-    callbacks.setLive(None)
 
 
 def test_plate_cycles_between_fmax_and_fmin():
@@ -97,7 +88,6 @@ def test_plate_cycles_between_fmax_and_fmin():
     assert t[-1] > 2.4 / F
     assert np.max(np.abs(Fa - loadCurve(FMAX, Fmin, F, t))) <= TOL_APPLIED * FMAX
     assert np.min(Fa[t > 0.6 / F]) == pytest.approx(Fmin, rel=1e-3)
-    callbacks.setLive(None)
 
 
 def test_displacement_mode_moves_at_its_speed_until_fmax():
@@ -110,4 +100,3 @@ def test_displacement_mode_moves_at_its_speed_until_fmax():
     while not exp.loading.done():
         O.run(200, True)
     assert exp.loading.force() >= FMAX
-    callbacks.setLive(None)

@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 
 pytest.importorskip('yade')
+from ballast.experiments import grains  # noqa: E402
 from ballast.oedometer import Oedometer, StoredPacking, check  # noqa: E402
 
 SMALL = dict(diameter=0.12, height=0.06, dMin=0.02, dMax=0.026, progress=60)
@@ -40,14 +41,14 @@ def test_store_builds_once_then_reuses(tmp_path):
         data = json.load(fh)
     assert data['key']['seed'] == 1 and data['key']['diameter'] == SMALL['diameter']
     stored = np.array(data['grains'], dtype=float)
-    x, r, _ = first.grainArrays()
+    x, r, _ = grains.arrays()
     assert len(r) == len(stored) >= 5
     # in the cylinder, filled to about its height (the fill fraction is chosen for that)
     assert np.all(np.hypot(x[:, 0], x[:, 1]) + r <= first.cylinder.Rv + 1e-3)
     assert np.all(x[:, 2] - r >= -1e-3) and np.max(x[:, 2] + r) <= SMALL['height'] + SMALL['dMax']
     second = Oedometer(**dict(kw, f=3)).prepare()
     assert second.packing.reused and second.packing.file == first.packing.file
-    x2, r2, _ = second.grainArrays()
+    x2, r2, _ = grains.arrays()
     np.testing.assert_array_equal(r2, r)  # the same grains; positions after the same settling
     np.testing.assert_array_equal(x2, x)
 
@@ -57,7 +58,7 @@ def test_paper_size_sample_is_dense(tmp_path):
     the plate seated on the highest grain at most 0.46 (issue 11; the loose deposition gave 0.524), the
     cylinder filled to about its height, grain sizes as asked."""
     run = Oedometer(results=str(tmp_path / 'r'), packingDir=str(tmp_path / 'packings'), progress=60).prepare()
-    x, r, _ = run.grainArrays()
+    x, r, _ = grains.arrays()
     top = float(np.max(x[:, 2] + r))
     porosity = 1 - np.sum(4 / 3 * math.pi * r ** 3) / (math.pi * 0.15 ** 2 * top)
     assert porosity <= 0.46

@@ -77,15 +77,29 @@ def test_run_bounds_by_hand():
     linear kn = 2 E r Es r / (E r + Es r) = 5.591e9 N/m, u = 2.683e-4 m = 2.6 % of r; Hertz E* =
     1 / (0.91 / 3e11 + 0.9375 / 3e12) = 2.989e11 Pa, kno = 4/3 E* sqrt(r/2) = 2.853e10, u = (F / kno)^(2/3)
     = 1.404e-3 m = 13.7 % of r: both below the 25 % allowed, 2e7 N is not (linear: 35 %)."""
-    from ballast.oedometer.parameters import singleContactOverlap, startTimeStep
     p = check({})
-    assert startTimeStep(p) == pytest.approx(0.8 * 0.01025 * (2600 / 3e11) ** 0.5, rel=1e-12)
-    assert 1 / 8 / startTimeStep(p) == pytest.approx(1.637e5, rel=1e-3)
+    assert p.startTimeStep() == pytest.approx(0.8 * 0.01025 * (2600 / 3e11) ** 0.5, rel=1e-12)
+    assert 1 / 8 / p.startTimeStep() == pytest.approx(1.637e5, rel=1e-3)
     kn = 2 * 3e11 * 0.01025 * 3e12 * 0.01025 / (3e11 * 0.01025 + 3e12 * 0.01025)
-    assert singleContactOverlap(p, 1.5e6) == pytest.approx(1.5e6 / kn, rel=1e-12)
-    assert singleContactOverlap(p, 1.5e6) / 0.01025 == pytest.approx(0.02617, rel=1e-3)
+    assert p.singleContactOverlap(1.5e6) == pytest.approx(1.5e6 / kn, rel=1e-12)
+    assert p.singleContactOverlap(1.5e6) / 0.01025 == pytest.approx(0.02617, rel=1e-3)
     estar = 1 / ((1 - 0.3 ** 2) / 3e11 + (1 - 0.25 ** 2) / 3e12)
     ph = check({'law': 'hertz'})
-    assert singleContactOverlap(ph, 1.5e6) == pytest.approx((1.5e6 / (4 / 3 * estar * (0.01025 / 2) ** 0.5)) ** (2 / 3),
+    assert ph.singleContactOverlap(1.5e6) == pytest.approx((1.5e6 / (4 / 3 * estar * (0.01025 / 2) ** 0.5)) ** (2 / 3),
                                                            rel=1e-12)
-    assert singleContactOverlap(ph, 1.5e6) / 0.01025 == pytest.approx(0.1369, rel=1e-3)
+    assert ph.singleContactOverlap(1.5e6) / 0.01025 == pytest.approx(0.1369, rel=1e-3)
+
+
+def test_parameters_are_frozen_and_give_the_derived_values():
+    """One checked value: frozen, read as p.f or p['f']; derived values by hand: T = 1/f, the peak of eq. 8 at
+    T/2, Fmax/2 first at T/4, the crushing period Tc as a YADE period (every step for Tc = 0)."""
+    p = check({'f': 4, 'Tc': 2.5e-3})
+    assert p.f == p['f'] == 4.0 and p.T == 0.25 and p.peakTime() == 0.125 and p.halfLoadTime() == 0.0625
+    assert p.crushPeriod() == {'virtPeriod': 2.5e-3} and check({'Tc': 0}).crushPeriod() == {'iterPeriod': 1}
+    with pytest.raises(AttributeError, match='frozen'):
+        p.f = 8
+    assert check(p) is p                                  # checked once: a checked set is taken as it is
+    q = p.replace(f=2)
+    assert q.T == 0.5 and p.T == 0.25                     # a new value is a new, checked object
+    with pytest.raises(ParamError, match='f = -1'):
+        p.replace(f=-1)

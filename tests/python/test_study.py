@@ -262,6 +262,7 @@ def test_bad_command_line_is_refused_before_any_work(tmp_path):
         ([STUDY, 'run', str(table), '--lines', '2-x'], '--lines'),
         ([STUDY, 'run', str(table), '--timeout', '-5'], '--timeout'),
         ([STUDY, 'run', str(table), '--time', '5'], '--time'),  # no abbreviations
+        ([STUDY, 'run', str(table), '--experiment', 'sleeper'], "--experiment: invalid choice: 'sleeper'"),
         ([AGGREGATE, str(tmp_path / 'nothing')], 'STUDY'),
     ]
     for args, name in cases:
@@ -273,6 +274,14 @@ def test_bad_command_line_is_refused_before_any_work(tmp_path):
     bad.write_text('seed fq\n1 2\n')
     p = run([STUDY, 'run', str(bad), '--out', str(tmp_path / 'o')], timeout=30)
     assert p.returncode == 2 and 'fq' in p.stdout_text
+
+
+def test_the_script_is_the_experiments_own_by_default(tmp_path):
+    # no --script: the oedometer's declaration names scripts/oedometer.py of this repository, which exists
+    table = tmp_path / 't.table'
+    tinyTable(table)
+    p = run([STUDY, 'run', str(table), '--dry-run', '--out', str(tmp_path / 'o')], timeout=30)
+    assert p.returncode == 0 and p.stdout_text.count('to run') == 3, p.stdout_text
 
 
 def test_a_value_out_of_range_is_refused_before_any_run(tmp_path):

@@ -4,7 +4,17 @@ import argparse
 
 import pytest
 
-from ballast.study.options import OPTIONS, StudyError, argument, flag, optionValue
+from ballast.experiments import Declaration, declaration
+from ballast.study.options import OPTIONS, StudyError, argument, experimentDeclaration, flag, optionValue
+
+
+def test_the_experiment_is_a_name_a_declaration_or_the_oedometer():
+    oedometer = declaration('oedometer')
+    assert experimentDeclaration() is oedometer and experimentDeclaration('oedometer') is oedometer
+    other = Declaration('other', {}, lambda v, text=False: v, 'x.py', {'results': 'r', 'runId': 'i', 'sampleStore': None})
+    assert experimentDeclaration(other) is other and other.studySets() == ('r', 'i')
+    with pytest.raises(StudyError, match="--experiment: experiment = 'sleeper' is not allowed: expected one of .*oedometer"):
+        experimentDeclaration('sleeper')
 
 
 def test_values_are_checked_against_their_declaration():

@@ -7,9 +7,11 @@ import os
 import numpy as np
 import pytest
 
+from ballast.experiments import Declaration, declaration
 from ballast.study import LocalExecutor, Study, StudyData
+from ballast.study.aggregate import stats
 from ballast.study.options import StudyError
-from ballast.study.records import MAX_FD_ROWS, hasRecord, keepRecord, recordPath, thinChecks, thinFd
+from ballast.study.records import MAX_FD_ROWS, hasRecord, keepRecord, recordPath, thinChecks, thinFd, writeRecord
 from study_fakes import writeFakeYade
 
 TABLE = 'seed! f!\n1 2\n1 4\n2 2\n'
@@ -121,6 +123,28 @@ def test_a_record_is_small_and_keeps_what_the_figures_and_tables_need(tmp_path):
         keepRecord(str(tmp_path / 'cut'), str(tmp_path / 'rec'), 'cut')
 
 
+def test_the_experiment_says_which_checks_a_record_keeps_and_a_record_may_cut_its_summary(tmp_path):
+    # checks every 1 ms with a flat ratio: a record keeps the ends, the crushes at 0.3 and 0.7 s and the two
+    # checks around each time the declaration names (here 0.4555 s: the checks at 0.455 and 0.456 s)
+    run = str(tmp_path / 'run')
+    writeRun(run)
+    with open(os.path.join(run, 'checks.csv'), 'w') as fh:
+        fh.write('t,iter,nCrushed,maxStressRatio\n' + ''.join('%g,%d,%d,1\n' % (1e-3 * k, k, k in (300, 700)) for k in range(1000)))
+    oedometer = declaration('oedometer')
+    other = Declaration('other', oedometer.params, oedometer.check, 'x.py', oedometer.sets, recordTimes=lambda p: [0.4555])
+    dest = writeRecord(run, str(tmp_path / 'rec'), other, summaryKeys=('deltaAtPeak', 'notThere'))
+    with open(os.path.join(dest, 'checks.csv'), newline='') as fh:
+        assert [r['iter'] for r in csv.DictReader(fh)] == ['0', '300', '455', '456', '700', '999']
+    with open(os.path.join(dest, 'summary.json')) as fh:
+        assert json.load(fh) == {'deltaAtPeak': 0.06, 'params': {'seed': 1, 'f': 2.0}}
+    with open(os.path.join(dest, 'record.json')) as fh:
+        assert json.load(fh)['runId'] == 'rec'
+    # the oedometer's: the checks around Fmax/2 at t = 1/(4f) = 0.125 s
+    dest = writeRecord(run, str(tmp_path / 'oed'))
+    with open(os.path.join(dest, 'checks.csv'), newline='') as fh:
+        assert [r['iter'] for r in csv.DictReader(fh)] == ['0', '125', '300', '700', '999']
+
+
 @pytest.fixture
 def setup(tmp_path):
     (tmp_path / 'tiny.table').write_text(TABLE)
@@ -139,7 +163,7 @@ def test_a_study_goes_on_from_its_records_on_another_machine(setup, tmp_path, ca
     assert index['table'] == 'tiny.table' and 'script' not in index and [r['runId'] for r in index['rows']] == IDS
     # the records aggregate like a study directory; the row not run yet is missing
     data = StudyData(rec)
-    assert data.param == 'f' and data.missing == [IDS[2]] and data.stats()[0]['deltaAtPeak_mean'] == pytest.approx(1e-3)
+    assert data.param == 'f' and data.missing == [IDS[2]] and stats(data)[0]['deltaAtPeak_mean'] == pytest.approx(1e-3)
     capsys.readouterr()
     # session 2, a fresh clone on another machine: no study directory, only the records
     assert Study(out=str(tmp_path / 'machine2'), **setup).run(LocalExecutor(2)) == 0

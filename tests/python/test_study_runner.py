@@ -15,6 +15,7 @@ import time
 
 import pytest
 
+from ballast.experiments import declaration
 from ballast.study import runner
 from ballast.study.files import codeSha1, readSummary, writeAtomic
 from study_fakes import writeFakeYade
@@ -32,8 +33,16 @@ def spec(tmp_path):
     (tmp_path / 'oedometer.py').write_text(SCRIPT)
     return {'runId': 'seed=1,f=2', 'line': 2, 'row': {'seed': '1', 'f': '2'}, 'tableText': TABLE, 'tableName': 'tiny.table',
             'scriptPath': str(tmp_path / 'oedometer.py'), 'scriptText': SCRIPT, 'yade': writeFakeYade(tmp_path), 'nice': 10,
-            'env': {'OMP_NUM_THREADS': '1'}, 'out': str(out), 'token': 'token', 'packings': str(tmp_path / 'packings'),
-            'packingFiles': {}, 'timeout': None, 'executor': 'local', 'ship': False}
+            'env': {'OMP_NUM_THREADS': '1'}, 'out': str(out), 'token': 'token', 'sets': declaration('oedometer').sets,
+            'packings': str(tmp_path / 'packings'), 'packingFiles': {}, 'timeout': None, 'executor': 'local', 'ship': False}
+
+
+def test_the_command_line_sets_what_the_declaration_says():
+    spec = {'yade': 'yade', 'nice': None, 'runId': 'r1', 'sets': {'results': 'out', 'runId': 'name', 'sampleStore': None}}
+    assert runner.command(spec, 'a.py', '/res', '/samples') == ['yade', '-n', '-x', 'a.py', '--out', '/res', '--name', 'r1']
+    spec = dict(spec, nice=5, sets=declaration('oedometer').sets)
+    assert runner.command(spec, 'a.py', '/res', '/samples') == ['yade', '--nice=5', '-n', '-x', 'a.py', '--results', '/res',
+                                                              '--runId', 'r1', '--packingDir', '/samples']
 
 
 def seen(d):

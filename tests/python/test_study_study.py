@@ -10,6 +10,7 @@ import threading
 
 import pytest
 
+from ballast.experiments import Declaration, declaration
 from ballast.study import LocalExecutor, Study, StudyData, runner, status
 from ballast.study.files import codeSha1
 from ballast.study.options import StudyError
@@ -51,7 +52,7 @@ def test_a_study_runs_its_rows_and_carries_on_where_it_stopped(setup, capsys):
     assert study(setup).run(LocalExecutor(2)) == 1  # a run failed
     said = capsys.readouterr().out
     assert '3 rows, 0 finished before (skipped), 3 to run' in said
-    assert '1 run(s) wait for the packing one of 1 other run(s) builds first' in said and 'FAILED seed=2,f=2 (line 4)' in said
+    assert '1 run(s) wait for the prepared sample one of 1 other run(s) builds first' in said and 'FAILED seed=2,f=2 (line 4)' in said
     st = statusRows(out)
     assert [st[r]['status'] for r in IDS] == ['finished', 'finished', 'failed']
     assert st[IDS[2]]['exitCode'] == '3' and st[IDS[2]]['error'] == 'RuntimeError: the fake failed on purpose'
@@ -61,6 +62,7 @@ def test_a_study_runs_its_rows_and_carries_on_where_it_stopped(setup, capsys):
     with open(os.path.join(out, 'study.json')) as fh:
         info = json.load(fh)
     assert info['codeSha1'] == codeSha1('# the oedometer\n') and [r['runId'] for r in info['rows']] == IDS
+    assert info['experiment'] == 'oedometer'
     assert open(os.path.join(out, 'table')).read() == TABLE  # the table as run
     assert sorted(journal(out)) == sorted(IDS)
 
@@ -122,13 +124,33 @@ def test_a_stored_packing_needs_no_leader_and_goes_with_the_task(setup):
     s = study(setup)
     s.prepare()
     assert [t['leader'] for t in s.tasks(s.lines, 'local')] == [IDS[1], None, None]
-    assert s.packingName(2) == s.packingName(3) != s.packingName(4)
-    with open(os.path.join(s.packings, s.packingName(2)), 'w') as fh:
+    assert s.sampleName(2) == s.sampleName(3) != s.sampleName(4)
+    with open(os.path.join(s.packings, s.sampleName(2)), 'w') as fh:
         fh.write('{"grains": []}')
     tasks = s.tasks(s.lines, 'local')
     assert [t['leader'] for t in tasks] == [None, None, None]
-    assert tasks[0]['spec']['packingFiles'] == {s.packingName(2): b'{"grains": []}'} and tasks[2]['spec']['packingFiles'] == {}
+    assert tasks[0]['spec']['packingFiles'] == {s.sampleName(2): b'{"grains": []}'} and tasks[2]['spec']['packingFiles'] == {}
     assert tasks[2]['spec']['env'] == {'OMP_NUM_THREADS': '1', 'FAKE': 'fail'}  # yade-batch's !COLUMNS
+
+
+def test_the_declaration_says_which_runs_share_a_sample_and_which_builds_it(setup, capsys):
+    """The study knows the experiment by its declaration: with one whose cost is f (the oedometer's is
+    cycles / f), the f = 2 Hz run of seed 1 builds the packing and the 4 Hz run waits; with one that
+    names no sample, nothing waits."""
+    oedometer = declaration('oedometer')
+    cheapSlow = Declaration('slowfirst', oedometer.params, oedometer.check, 'x.py', oedometer.sets,
+                            sampleKey=oedometer.sampleKey, cost=lambda p: p['f'])
+    assert study(setup, experiment=cheapSlow).run(LocalExecutor(2)) == 1
+    with open(os.path.join(setup['out'], 'runs', IDS[1], 'summary.json')) as fh:
+        assert json.load(fh)['packingBuiltBy'] == IDS[0]
+    with open(os.path.join(setup['out'], 'study.json')) as fh:
+        assert json.load(fh)['experiment'] == 'slowfirst'
+    none = Declaration('nosample', oedometer.params, oedometer.check, 'x.py', oedometer.sets)
+    s = study(setup, out=setup['out'] + '2', experiment=none)
+    s.prepare()
+    assert s.sampleName(2) is None and [t['leader'] for t in s.tasks(s.lines, 'local')] == [None, None, None]
+    with pytest.raises(StudyError, match="--experiment: experiment = 'sleeper' is not allowed"):
+        study(setup, experiment='sleeper')
 
 
 def test_a_stopped_run_and_one_a_dead_runner_left_are_in_the_journal(setup, tmp_path, capsys, ctrlC):

@@ -7,9 +7,12 @@ import sys
 
 import pytest
 
-from ballast.oedometer.parameters import PARAMS
+from ballast.experiments import Declaration, declaration
+from ballast.params import ParamError
 from ballast.study.options import StudyError
-from ballast.study.table import Table, cellValue, gridTable, gridValues
+from ballast.study.table import Table, cellValue, gridTable, gridValues, tableRow
+
+PARAMS = declaration('oedometer').params
 
 
 def table(text):
@@ -80,6 +83,48 @@ def test_columns_that_are_not_parameters_are_named():
     assert 'runId' in refused('seed runId\n1 a\n') and 'set by the study' in refused('seed runId\n1 a\n')
     # the description and yade-batch's !COLUMNS are not parameters
     assert table('description seed !OMP_NUM_THREADS\na 1 2\n').check()[2]['seed'] == 1
+
+
+def test_a_cell_star_is_the_default():
+    params = table("seed f pattern\n1 * 'planar4'\n2 0.5 *\n").check()
+    assert params[2]['f'] == PARAMS['f'].default and params[3]['pattern'] == PARAMS['pattern'].default
+    assert params[2]['pattern'] == 'planar4' and params[3]['f'] == 0.5
+
+
+def test_the_columns_are_checked_against_the_experiment_named():
+    oedometer = declaration('oedometer')
+    # an experiment with two parameters, its own check and no sample store: 'packingDir' is an ordinary column
+    small = Declaration('small', {k: PARAMS[k] for k in ('seed', 'packingDir')}, lambda v, text=False: dict(v), 'x.py',
+                        {'results': 'out', 'runId': 'name', 'sampleStore': None})
+    assert table('seed packingDir\n1 /tmp/p\n').check(small) == {2: {'seed': '1', 'packingDir': '/tmp/p'}}
+    assert 'set by the study' in refused('seed packingDir\n1 /tmp/p\n')  # the oedometer's study sets it
+    with pytest.raises(StudyError, match='column.s. f are not parameters of the small; parameters: seed, packingDir'):
+        table('seed f\n1 2\n').check(small)
+    assert table('seed f\n1 2\n').check(oedometer)[2]['f'] == 2
+    with pytest.raises(StudyError, match="--experiment: experiment = 'sleeper' is not allowed"):
+        table('seed\n1\n').check('sleeper')
+
+
+def test_a_run_reads_its_row_with_the_same_reader(tmp_path):
+    """tableRow: the cells of one row as a run under yade-batch reads them (YADE_BATCH=table:line), with
+    the line numbers, '=' and '*' of the study's reader; no description, no !COLUMNS."""
+    path = tmp_path / 't.table'
+    path.write_text("# c\ndescription seed f !OMP_NUM_THREADS pattern\nslow 1 0.5 1 'planar4'\nfast 1 = 1 *\n")
+    assert tableRow(str(path), 3) == {'seed': '1', 'f': '0.5', 'pattern': "'planar4'"}
+    assert tableRow(str(path), 4) == {'seed': '1', 'f': '0.5'}
+    with pytest.raises(StudyError, match=r't.table: line 5 holds no row; rows are on lines 3,4'):
+        tableRow(str(path), 5)
+    path.write_text('seed fq\n1 2\n')
+    with pytest.raises(ParamError, match='Oedometer: fq is not a parameter .a column of .*t.table.; parameters: seed, ') as e:
+        tableRow(str(path), 2)
+    assert e.value.name == 'fq'
+    path.write_text('seed f\n1 2)\n')
+    with pytest.raises(ParamError, match=r"Oedometer: cannot read f = '2\)' from .*t.table:2") as e:
+        tableRow(str(path), 2)
+    assert e.value.name == 'f'
+    # two rows with one run id: refused by a study, not by a run of one row (yade-batch runs both)
+    path.write_text('seed! f\n1 2\n1 4\n')
+    assert tableRow(str(path), 3) == {'seed': '1', 'f': '4'}
 
 
 def test_cell_values_as_the_oedometer_reads_them():

@@ -1,27 +1,32 @@
-"""The oedometric test of the paper (sections 4-5) as a library.
+"""``ballast.oedometer`` is the oedometer experiment, :mod:`ballast.experiments.oedometer`: users'
+scripts import ``from ballast.oedometer import Oedometer``. This name and its modules
+(``ballast.oedometer.parameters``, ...) are that package and its modules themselves, the same objects,
+so every class exists once."""
+import importlib
+import importlib.abc
+import importlib.util
+import sys
 
-    from ballast.oedometer import Oedometer      # in a yade session
-    run = Oedometer(seed=2, f=4, pattern=14)
-    run.prepare(); run.load(); run.summary()
-
-Modules: :mod:`.parameters` (every parameter, declared once) and :mod:`.loadcurve` (eq. 8 and its
-cycles), both without YADE; :mod:`.scene` (the cylinder, materials, engine chain), :mod:`.packing`
-(the sample), :mod:`.loading` (the load on a plate), :mod:`.outputs` (files, VTK, yade.plot),
-:mod:`.progress` (phases with progress lines), :mod:`.experiment` (Oedometer), :mod:`.commandline`
-(``yade scripts/oedometer.py``).
-"""
-from .loadcurve import eq8, loadCurve
-from .parameters import PARAMS, check, packingKey
-
-_YADE = {'Oedometer': 'experiment', 'StoredPacking': 'packing', 'PlateLoad': 'loading', 'ServoLoad': 'loading',
-         'DisplacementLoad': 'loading', 'Outputs': 'outputs'}
-
-__all__ = ['PARAMS', 'check', 'eq8', 'loadCurve', 'packingKey'] + list(_YADE)
+_PREFIX, _TARGET = __name__ + '.', 'ballast.experiments.oedometer.'
 
 
-def __getattr__(name):
-    """The classes that need YADE, imported on first use: the parameters are readable without it."""
-    if name in _YADE:
-        import importlib
-        return getattr(importlib.import_module('.' + _YADE[name], __name__), name)
-    raise AttributeError('module %r has no attribute %r' % (__name__, name))
+class _Alias(importlib.abc.MetaPathFinder, importlib.abc.Loader):
+    """ballast.oedometer.X is ballast.experiments.oedometer.X (and ballast.oedometer.callbacks, the refusal
+    of format-1 states, stays here)."""
+
+    def find_spec(self, name, path, target=None):
+        if name.startswith(_PREFIX) and name != _PREFIX + 'callbacks':
+            return importlib.util.spec_from_loader(name, self)
+        return None
+
+    def create_module(self, spec):
+        return importlib.import_module(_TARGET + spec.name[len(_PREFIX):])
+
+    def exec_module(self, module):
+        pass
+
+
+if not any(isinstance(f, _Alias) for f in sys.meta_path):
+    sys.meta_path.insert(0, _Alias())
+
+from ..experiments.oedometer import PARAMS, __all__, __getattr__, check, eq8, loadCurve, packingKey  # noqa: E402,F401

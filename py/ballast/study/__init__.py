@@ -1,24 +1,26 @@
-"""Parameter studies of the oedometric test: one row of a yade-batch table is one run of the
-oedometer's command line (``yade -n -x scripts/oedometer.py``), on the cores of this machine or
-through a Dask scheduler, skipping what already finished; then the finished runs aggregated into
-the tables and figures of the paper. ``scripts/study.py`` and ``scripts/aggregate.py`` are the
-command lines; see docs/studies.md.
+"""Parameter studies of any experiment of ballast.experiments (the oedometer unless named): one row of
+a yade-batch table is one run of the experiment's command line (``yade -n -x scripts/oedometer.py``),
+on the cores of this machine or through a Dask scheduler, skipping what already finished; then the
+finished runs read back and aggregated into runs.csv and stats.csv. ``scripts/study.py`` is the
+command line; see docs/studies.md. The experiment is known by its declaration
+(:func:`ballast.experiments.declaration`); the analyses of the studies are :mod:`ballast.analysis`.
 
     from ballast.study import Study, LocalExecutor
     Study('studies/ci.table', script='scripts/oedometer.py', out='/tmp/ci').run(LocalExecutor(2))
 
-Modules: :mod:`.table` (reading, checking and writing tables), :mod:`.runner` (one run: the yade
-process, its files, shipping to workers without a shared file system), :mod:`.executors` (local,
-Dask), :mod:`.study` (Study: bookkeeping, restart, status), :mod:`.aggregate` (StudyData, CSV,
-figures), :mod:`.options` (the runner's options, StudyError), :mod:`.files` (atomic writes, the
-code's sha1). Needs no running YADE: reading a table imports YADE's table reader, the runs are
-yade processes.
+Modules: :mod:`.table` (reading, checking and writing tables: the one reader of the yade-batch
+tables), :mod:`.runner` (one run: the yade process, its files, shipping to workers without a shared
+file system), :mod:`.executors` (local, Dask), :mod:`.study` (Study: bookkeeping, restart, status),
+:mod:`.records` (the compact records kept in the repository), :mod:`.data` (a run and a study read
+back as DataFrames: read_run, StudyData), :mod:`.aggregate` (runs.csv, stats.csv), :mod:`.options`
+(the runner's options, StudyError), :mod:`.files` (atomic writes, the code's sha1). Needs no running
+YADE: reading a table imports YADE's table reader, the runs are yade processes.
 """
-from .aggregate import StudyData
+from .data import StudyData, StudyRuns, read_run
 from .executors import DaskExecutor, LocalExecutor, makeExecutor
 from .options import StudyError
 from .study import Study, status
-from .table import Table, gridTable
+from .table import Table, gridTable, tableRow
 
-__all__ = ['DaskExecutor', 'LocalExecutor', 'Study', 'StudyData', 'StudyError', 'Table', 'gridTable', 'makeExecutor',
-           'status']
+__all__ = ['DaskExecutor', 'LocalExecutor', 'Study', 'StudyData', 'StudyError', 'StudyRuns', 'Table', 'gridTable',
+           'makeExecutor', 'read_run', 'status', 'tableRow']

@@ -119,7 +119,7 @@ class DaskExecutor:
             keys = [k for ks in self.client.processing().values() for k in ks]
         except Exception:
             return None
-        return [re.sub(r'^oedometer-(.*)-[0-9a-f]{8}$', r'\1', str(k)) for k in keys]
+        return [re.sub(r'^run-(.*)-[0-9a-f]{8}$', r'\1', str(k)) for k in keys]
 
     def run(self, tasks, onDone, onStart):
         from distributed import Event, as_completed
@@ -140,7 +140,7 @@ class DaskExecutor:
                                                               key='packings-%s-%s' % (lead, session), pure=False)
                     dep = packingsOf[lead]
                 fut = self.client.submit(self.runRow, dict(t['spec'], stopEvent=stopName), dep, pure=False,
-                                         key='oedometer-%s-%s' % (t['spec']['runId'], session), priority=0 if lead else 10)
+                                         key='run-%s-%s' % (t['spec']['runId'], session), priority=0 if lead else 10)
                 pending[fut] = t
                 byId[t['spec']['runId']] = fut
                 onStart(t, quiet=True)

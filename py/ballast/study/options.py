@@ -14,6 +14,22 @@ class StudyError(Exception):
     and column), the value and what is allowed. The command lines exit with status 2 on it."""
 
 
+# what a study runs when none is named, and what made the study folders older than study.json's 'experiment'
+DEFAULT_EXPERIMENT = 'oedometer'
+
+
+def experimentDeclaration(experiment=None):
+    """The declaration (ballast.experiments.Declaration) of `experiment`: a name, a Declaration, or None
+    for DEFAULT_EXPERIMENT. StudyError naming the experiments there are."""
+    from ..experiments import Declaration, declaration
+    if isinstance(experiment, Declaration):
+        return experiment
+    try:
+        return declaration(experiment or DEFAULT_EXPERIMENT)
+    except ValueError as e:
+        raise StudyError('--experiment: %s' % e) from None
+
+
 def lineList(v):
     """yade-batch's --lines: '2,3-5,8' (or line numbers) -> the sorted line numbers."""
     if isinstance(v, str):

@@ -2,8 +2,8 @@
 the machine that ran it (issue 14, item 4).
 
 A record folder (``scripts/study.py run TABLE --records DIR``, for example ``docs/studies/<study>``) is a
-study directory that :class:`ballast.study.StudyData` and ``scripts/aggregate.py`` read as they read
-the full one:
+study directory that :mod:`ballast.study.data` and ``scripts/aggregate.py`` read as they read the
+full one:
 
     study.json              the rows of the table (run ids, cells), as in the study directory
     runs/<run id>/          per finished run, a few tens of kB:
@@ -11,8 +11,9 @@ the full one:
         row.json            the runner's row.json (table row, code sha1, host, command, duration)
         fd.csv              fd.csv thinned to at most MAX_FD_ROWS rows (:func:`thinCurve`), same columns
         checks.csv          the per-check log thinned (:func:`thinChecks`): every check where a grain
-                            crushed, the two around half the peak load (t = 1/(4f)) and the largest
-                            stress ratio to 1/200 of its range
+                            crushed, the two around each of the experiment's recordTimes (the
+                            oedometer: half the peak load, t = 1/(4f)) and the largest stress ratio
+                            to 1/200 of its range
         crushes.csv         per crush (events.csv): t [s], the grain's radius [m] and its ratio, the
                             criterion's stress over the strength it crushed at [-]
         record.json         what was left out: rows of fd.csv and checks.csv, the largest stress ratio
@@ -21,10 +22,10 @@ the full one:
 
 The study runner skips a row whose record exists (the same test as for a finished run: its
 summary.json parses), so a session runs a slice, commits the records, and the next one, on any
-machine, carries on with the rest. The raw results stay out of git.
+machine, carries on with the rest. The raw results stay out of git. :func:`writeRecord` is the one
+writer of records, also of runs kept outside a study (the many-cycle runs of docs/studies/cycles,
+their summary cut to a few entries).
 """
-import csv
-import io
 import json
 import os
 import shutil
@@ -32,8 +33,9 @@ import uuid
 
 import numpy as np
 
-from ..oedometer.loadcurve import halfLoadTime
+from .data import Run, column
 from .files import moveSynced, readSummary, writeAtomic
+from .options import experimentDeclaration
 
 MAX_FD_ROWS = 600          # rows of a recorded F-delta curve [-]: ~40 kB, enough for the paper's figures
 MAX_CHECK_ROWS = 400       # rows of a recorded per-check log [-]
@@ -106,78 +108,64 @@ def thinChecks(columns, maxRows=MAX_CHECK_ROWS, times=()):
                      list(np.flatnonzero(np.asarray(columns['nCrushed']) > 0)) + around, maxRows + len(around))
 
 
-def readCsv(path):
-    """(header, rows as lists of strings) of a CSV file."""
+def keptLines(path, rows):
+    """The header and the data lines `rows` (0-based) of the CSV file at path, as they are written
+    there: a record copies its rows, it does not print them again."""
     with open(path, newline='') as fh:
-        rows = list(csv.reader(fh))
-    return rows[0], rows[1:]
+        lines = [l for l in fh.read().splitlines() if l.strip()]  # as readTable, which skips blank lines
+    return '\n'.join([lines[0]] + [lines[1 + int(i)] for i in rows]) + '\n'
 
 
-def csvText(header, rows):
-    buf = io.StringIO()
-    w = csv.writer(buf, lineterminator='\n')
-    w.writerow(header)
-    w.writerows(rows)
-    return buf.getvalue()
+def columns(frame):
+    """{name: float array} of a DataFrame (what thinCurve takes)."""
+    return {name: column(frame, name) for name in frame.columns}
 
 
-def crushTable(runDir):
-    """(t [s], radius [m], ratio [-]) arrays, one entry per crush of a run folder (events.csv) or a record
-    (crushes.csv); ratio = the criterion's stress / the strength when the check crushed the grain. None
-    without either file."""
-    for name in ('crushes.csv', 'events.csv'):
-        path = os.path.join(runDir, name)
-        if os.path.isfile(path):
-            header, rows = readCsv(path)
-            k = {h: i for i, h in enumerate(header)}
-            if name == 'events.csv':
-                rows = [r for r in rows if r[k['kind']] == 'crush']
-            t, radius = (np.array([float(r[k[c]]) for r in rows]) for c in ('t', 'radius'))
-            ratio = np.array([float(r[k['ratio']]) if 'ratio' in k else float(r[k['value']]) / float(r[k['strength']])
-                              for r in rows])
-            return t, radius, ratio
-    return None
-
-
-def keepRecord(runDir, records, runId):
-    """Writes the record of the finished run in runDir to records/runs/<runId> (replacing an older one
-    whole: it appears only once complete). Returns the record's folder."""
-    summary, why = readSummary(runDir)
-    if summary is None:
-        raise ValueError('%s is not a finished run: %s' % (runDir, why))
-    dest = recordPath(records, runId)
-    os.makedirs(os.path.dirname(dest), exist_ok=True)
+def writeRecord(runDir, dest, declaration=None, summaryKeys=None):
+    """Writes the record of the finished run in runDir to the folder dest (replacing an older one whole:
+    it appears only once complete): COPIED, fd.csv and checks.csv thinned (checks around the
+    `declaration`'s recordTimes of the run's parameters: a name or a Declaration, default the
+    oedometer), crushes.csv, record.json (see the module). summaryKeys: the summary cut to these
+    entries and the parameters (a record that needs no more than they). Returns dest; ValueError for a
+    run that did not finish."""
+    run = Run(runDir)
+    if run.summary is None:
+        raise ValueError('%s is not a finished run: %s' % (runDir, run.why))
+    os.makedirs(os.path.dirname(os.path.abspath(dest)), exist_ok=True)
     tmp = '%s.%s.tmp' % (dest, uuid.uuid4().hex[:6])
     os.makedirs(tmp)
-    info = {'runId': runId}
+    info = {'runId': os.path.basename(os.path.normpath(dest))}
     for name in COPIED:
         if os.path.isfile(os.path.join(runDir, name)):
             shutil.copyfile(os.path.join(runDir, name), os.path.join(tmp, name))
-    fd = os.path.join(runDir, 'fd.csv')
-    if os.path.isfile(fd):
-        header, rows = readCsv(fd)
-        cols = {h: np.array([float(r[k]) if r[k] else np.nan for r in rows]) for k, h in enumerate(header)}
-        kept = thinFd(cols)
-        writeAtomic(os.path.join(tmp, 'fd.csv'), csvText(header, [rows[i] for i in kept]))
-        info['fdRows'] = {'run': len(rows), 'record': int(len(kept))}
-    checks = os.path.join(runDir, 'checks.csv')
-    if os.path.isfile(checks):
-        header, rows = readCsv(checks)
-        cols = {h: np.array([float(r[k]) for r in rows]) for k, h in enumerate(header)}
-        f = (summary.get('params') or {}).get('f')
-        kept = thinChecks(cols, times=[halfLoadTime(float(f))] if f else ()) if rows else []
-        writeAtomic(os.path.join(tmp, 'checks.csv'), csvText(header, [rows[i] for i in kept]))
-        info['checks'] = {'run': len(rows), 'record': int(len(kept)), 'crushing': int(np.sum(cols['nCrushed'] > 0)) if rows else 0,
-                          'maxStressRatio': float(np.max(cols['maxStressRatio'])) if rows else None}
-    crushes = crushTable(runDir)
-    if crushes is not None:
-        writeAtomic(os.path.join(tmp, 'crushes.csv'), csvText(['t', 'radius', 'ratio'], [
-            ['%.10g' % x for x in row] for row in zip(*crushes)]))
+    if summaryKeys is not None:
+        keep = {k: run.summary[k] for k in summaryKeys if k in run.summary}
+        keep['params'] = run.summary['params']
+        writeAtomic(os.path.join(tmp, 'summary.json'), json.dumps(keep, indent=1))
+    if run.fd is not None:
+        kept = thinFd(columns(run.fd))
+        writeAtomic(os.path.join(tmp, 'fd.csv'), keptLines(os.path.join(runDir, 'fd.csv'), kept))
+        info['fdRows'] = {'run': len(run.fd), 'record': int(len(kept))}
+    if run.checks is not None:
+        cols, n = columns(run.checks), len(run.checks)
+        times = experimentDeclaration(declaration).recordTimes(run.params) if run.params else ()
+        kept = thinChecks(cols, times=times) if n else []
+        writeAtomic(os.path.join(tmp, 'checks.csv'), keptLines(os.path.join(runDir, 'checks.csv'), kept))
+        info['checks'] = {'run': n, 'record': int(len(kept)), 'crushing': int(np.sum(cols['nCrushed'] > 0)) if n else 0,
+                          'maxStressRatio': float(np.max(cols['maxStressRatio'])) if n else None}
+    if run.crushes is not None:
+        rows = zip(*(column(run.crushes, c) for c in ('t', 'radius', 'ratio')))
+        writeAtomic(os.path.join(tmp, 'crushes.csv'), 't,radius,ratio\n' + ''.join('%.10g,%.10g,%.10g\n' % r for r in rows))
     writeAtomic(os.path.join(tmp, 'record.json'), json.dumps(info, indent=1))
     if os.path.isdir(dest):
         shutil.rmtree(dest)
     moveSynced(tmp, dest)
     return dest
+
+
+def keepRecord(runDir, records, runId, declaration=None):
+    """The record of the finished run in runDir as records/runs/<runId> (writeRecord)."""
+    return writeRecord(runDir, recordPath(records, runId), declaration)
 
 
 def writeIndex(records, info):

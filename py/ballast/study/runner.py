@@ -2,9 +2,11 @@
 
     YADE_BATCH=table:line OMP_NUM_THREADS=1 yade -n -x SCRIPT --results DIR --runId ID --packingDir DIR
 
-in a thread of the study (local) or on a Dask worker. A worker that sees the study directory (a
-shared file system) writes the run there; one that does not gets the script, the table and the
-packing with the task and sends the run's files back (:func:`finalizeShipped` writes them).
+(the options are the parameters the experiment's declaration has the study set, `sets`; these are
+the oedometer's) in a thread of the study (local) or on a Dask worker. A worker that sees the study
+directory (a shared file system) writes the run there; one that does not gets the script, the table
+and the prepared sample with the task and sends the run's files back (:func:`finalizeShipped`
+writes them).
 :func:`runRow` never raises: a failure is a result like any other.
 
 A run does not outlive its runner, however that ends (a SIGKILL from the OOM killer or Slurm
@@ -272,10 +274,20 @@ def runYade(cmd, env, cwd, logPath, deadline, stopped, keepFds=()):
         watchdog.wait()
 
 
+def command(spec, script, results, samples):
+    """The yade command line of a run: yade [--nice=N] -n -x SCRIPT, then the parameters the study sets
+    (spec['sets'], the declaration's): where the run writes, its id, where prepared samples are stored
+    (left out for an experiment without them)."""
+    sets = spec['sets']
+    return [spec['yade']] + (['--nice=%d' % spec['nice']] if spec['nice'] is not None else []) + [
+        '-n', '-x', script, '--' + sets['results'], results, '--' + sets['runId'], spec['runId']] + (
+        ['--' + sets['sampleStore'], samples] if sets.get('sampleStore') else [])
+
+
 def runRow(spec, leader=None):
     """Run one table row. spec (see Study.tasks): runId, line, row, tableText, tableName, scriptPath,
-    scriptText, yade, nice, env, out, token, packings, packingFiles, timeout [s], executor, ship,
-    stopEvent. leader: the result of the run that built the packing this one needs (its new
+    scriptText, yade, nice, env, out, token, sets (the declaration's), packings, packingFiles,
+    timeout [s], executor, ship, stopEvent. leader: the result of the run that built the packing this one needs (its new
     packings), or None. Returns a dict, status 'ok', 'failed', 'timeout', 'stopped' or 'elsewhere'
     (another runner holds the run's lock); None if the study was stopped before this run started."""
     runId, line = spec['runId'], spec['line']
@@ -299,8 +311,7 @@ def runRow(spec, leader=None):
                 return res
         work, table, script, pdir, given = workDir(spec, shared, leader)
         results = os.path.join(work, 'results')
-        cmd = [spec['yade']] + (['--nice=%d' % spec['nice']] if spec['nice'] is not None else []) + [
-            '-n', '-x', script, '--results', results, '--runId', runId, '--packingDir', pdir]
+        cmd = command(spec, script, results, pdir)
         env = dict(os.environ)
         env.update(spec['env'])
         env.update({'YADE_BATCH': '%s:%d' % (table, line), 'DISPLAY': ''})

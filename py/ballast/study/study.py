@@ -2,22 +2,25 @@
 and carry on.
 
 A study directory holds
-    runs/<run id>/      finished runs: the oedometer's output (summary.json, fd.csv, ...) and row.json
+    runs/<run id>/      finished runs: the experiment's output (summary.json, fd.csv, ...) and row.json
     logs/<run id>.log   the log of the last attempt of every run, with yade-batch's job summary at the end
     failed/<run id>/    what the last failed attempt left (removed once the run succeeds)
     status.csv          one line per table row: status, exit code, duration, host
     journal.jsonl       every attempt, appended as it ends (one whose runner died: when the study starts again)
     table, study.json   the table as it was run (the runs read their row from it, as under yade-batch)
-                        and the study's description (rows, run ids, script, code sha1)
+                        and the study's description (experiment, rows, run ids, script, code sha1)
 A run counts as finished when runs/<run id>/summary.json parses (files.readSummary, the test of
 the aggregation too): a study started again skips those and redoes the rest. With `records` (a folder
 in the repository, ballast.study.records) every finished run also leaves a compact record there, and
 a row whose record exists counts as finished: a study goes on from the records on any machine.
 
-Packings are stored in the packings directory (default: 'packings' next to the study directory,
-shared by the studies there) under the name ballast.oedometer.parameters.packingKey gives, and
-reused by every run with the same seed and packing parameters. Of the rows that need the same
-packing not stored yet, one runs first and builds it; the others wait for it.
+The experiment is known by its declaration (ballast.experiments: its parameters and their check,
+its script, the parameters the study sets, which runs share a prepared sample, the cost of a run).
+Prepared samples (the oedometer's packings) are stored in the packings directory (default:
+'packings' next to the study directory, shared by the studies there) under the name the
+declaration's sampleKey gives, and reused by every run that gets the same name. Of the rows that need
+the same sample not stored yet, the cheapest (the declaration's cost) runs first and builds it; the
+others wait for it.
 """
 import csv
 import io
@@ -29,9 +32,8 @@ import time
 import uuid
 
 from ..names import fmtTime
-from ..oedometer.parameters import packingKey
 from .files import codeSha1, readSummary, sha1, writeAtomic
-from .options import OPTIONS, StudyError, optionValue
+from .options import OPTIONS, StudyError, experimentDeclaration, optionValue
 from .records import hasRecord, keepRecord, recordPath, writeIndex
 from .runner import clearWork, failedLog, finalizeShipped, lastError
 from .table import Table
@@ -46,18 +48,21 @@ def defaultOut(table):
 
 
 class Study:
-    """The rows of `table` (a yade-batch table of oedometer parameters) run by `script` (the
-    oedometer's command line) into `out` (default :func:`defaultOut`). packings: the packing store
-    (default 'packings' next to `out`); lines: yade-batch's --lines (default: every row); yade: the
-    executable on the machines that run; nice, timeout, progress: see options.OPTIONS; ship: send
-    script, table and packings with every Dask task and the results back, even to workers that see
-    `out`; skipFailed: do not redo runs that failed before; verbose: a line when a run starts;
-    records: a folder for the compact records of the finished runs (records.py), whose rows are
-    skipped. Everything is checked here, before any run: a bad table row is refused naming line and column."""
+    """The rows of `table` (a yade-batch table of the parameters of `experiment`: a name or a
+    Declaration, default the oedometer) run by `script` (the experiment's command line, its
+    declaration's script) into `out` (default :func:`defaultOut`). packings: the store of prepared
+    samples (default 'packings' next to `out`); lines: yade-batch's --lines (default: every row);
+    yade: the executable on the machines that run; nice, timeout, progress: see options.OPTIONS;
+    ship: send script, table and packings with every Dask task and the results back, even to workers
+    that see `out`; skipFailed: do not redo runs that failed before; verbose: a line when a run
+    starts; records: a folder for the compact records of the finished runs (records.py), whose rows
+    are skipped. Everything is checked here, before any run: a bad table row is refused naming line
+    and column."""
 
     def __init__(self, table, script, out=None, packings=None, lines=None, yade='yade', nice=OPTIONS['nice'].default,
                  timeout=None, ship=False, skipFailed=False, progress=OPTIONS['progress'].default, verbose=False,
-                 records=None):
+                 records=None, experiment=None):
+        self.declaration = experimentDeclaration(experiment)
         if not os.path.isfile(table):
             raise StudyError('TABLE: no such file: %s' % table)
         if not os.path.isfile(script):
@@ -71,7 +76,7 @@ class Study:
         self.progress = optionValue('progress', progress)
         lines = optionValue('lines', lines)
         self.table = Table(table)
-        self.params = self.table.check()  # line -> every parameter of its run
+        self.params = self.table.check(self.declaration)  # line -> every parameter of its run
         self.out = os.path.abspath(out or defaultOut(table))
         self.packings = os.path.abspath(packings or os.path.join(os.path.dirname(self.out), 'packings'))
         self.records = os.path.abspath(records) if records else None
@@ -91,9 +96,10 @@ class Study:
     def say(self, msg):
         print('[study %8s] %s' % (fmtTime(time.time() - self.t0), msg), flush=True)
 
-    def packingName(self, line):
-        """File name of the packing the run of this line needs (in the packings directory)."""
-        return packingKey(self.params[line])[1]
+    def sampleName(self, line):
+        """File name of the prepared sample the run of this line needs (in the packings directory), None
+        if it needs none."""
+        return self.declaration.sampleKey(self.params[line])
 
     def finishedRow(self, line):
         """None if the run is not finished (in runs/, or as a record); else its row.json ({} if unreadable)."""
@@ -117,7 +123,7 @@ class Study:
         """The record of the finished run of `line` into `records` (if a records folder is given)."""
         rid = self.table.runId(line)
         if self.records and os.path.isdir(os.path.join(self.out, 'runs', rid)):
-            keepRecord(os.path.join(self.out, 'runs', rid), self.records, rid)
+            keepRecord(os.path.join(self.out, 'runs', rid), self.records, rid, self.declaration)
 
     def lock(self):
         import fcntl
@@ -157,7 +163,8 @@ class Study:
         self.token = uuid.uuid4().hex
         writeAtomic(os.path.join(self.out, '.study-token'), self.token)
         writeAtomic(os.path.join(self.out, 'table'), self.table.text)
-        info = {'table': os.path.abspath(self.tablePath), 'tableSha1': sha1(self.table.text), 'script': self.script,
+        info = {'experiment': self.declaration.name, 'table': os.path.abspath(self.tablePath),
+                'tableSha1': sha1(self.table.text), 'script': self.script,
                 'codeSha1': self.codeSha1, 'packings': self.packings, 'columns': self.table.columns,
                 'rows': [{'line': n, 'runId': self.table.runId(n), 'row': r} for n, r in self.table.rows]}
         writeAtomic(os.path.join(self.out, 'study.json'), json.dumps(info, indent=1))
@@ -176,15 +183,17 @@ class Study:
 
     def tasks(self, todo, executorName):
         """The runs of `todo` in table order: {'spec': what runner.runRow needs, 'leader': None or the
-        run id of the run that builds the packing this one needs}. Of the runs that need the same
-        packing not stored yet, the one with the shortest loading cycle (highest f) leads."""
+        run id of the run that builds the sample this one needs}. Of the runs that need the same
+        sample not stored yet, the cheapest (the declaration's cost; the first in the table of equals)
+        leads."""
         groups = {}
         for n in todo:
-            groups.setdefault(self.packingName(n), []).append(n)
+            if self.sampleName(n) is not None:
+                groups.setdefault(self.sampleName(n), []).append(n)
         leaderOf = {}
         for name, lines in groups.items():
             if len(lines) > 1 and not os.path.exists(os.path.join(self.packings, name)):
-                lead = min(lines, key=lambda n: (1 / self.params[n]['f'], lines.index(n)))
+                lead = min(lines, key=lambda n: (self.declaration.cost(self.params[n]), lines.index(n)))
                 leaderOf.update((n, self.table.runId(lead)) for n in lines if n != lead)
         tasks = []
         for n in todo:
@@ -195,13 +204,14 @@ class Study:
                 elif c.startswith('!') and c not in BATCH_COLUMNS:
                     env[c[1:]] = str(v)
             pfiles = {}
-            stored = os.path.join(self.packings, self.packingName(n))
-            if os.path.exists(stored):
-                with open(stored, 'rb') as fh:
-                    pfiles[self.packingName(n)] = fh.read()
+            name = self.sampleName(n)
+            if name is not None and os.path.exists(os.path.join(self.packings, name)):
+                with open(os.path.join(self.packings, name), 'rb') as fh:
+                    pfiles[name] = fh.read()
             spec = {'runId': self.table.runId(n), 'line': n, 'row': self.rows[n], 'tableText': self.table.text,
                     'tableName': os.path.abspath(self.tablePath), 'scriptPath': self.script, 'scriptText': self.scriptText,
                     'yade': self.yade, 'nice': self.nice, 'env': env, 'out': self.out, 'token': self.token,
+                    'sets': self.declaration.sets,
                     'packings': self.packings, 'packingFiles': pfiles, 'timeout': self.timeout, 'executor': executorName,
                     'ship': self.ship}
             tasks.append({'spec': spec, 'leader': leaderOf.get(n)})
@@ -250,7 +260,7 @@ class Study:
         tasks = self.tasks(todo, executor.name)
         nLead = len(set(t['leader'] for t in tasks if t['leader']))
         if nLead:
-            self.say('%d run(s) wait for the packing one of %d other run(s) builds first' % (
+            self.say('%d run(s) wait for the prepared sample one of %d other run(s) builds first' % (
                 len([t for t in tasks if t['leader']]), nLead))
         self.say('executor %s: %s' % (executor.name, executor.describe()))
         self.writeStatus()

@@ -1,12 +1,15 @@
-"""Study tables: yade-batch tables whose columns are parameters of the oedometer
-(:data:`ballast.oedometer.parameters.PARAMS`). They are read by YADE's own reader,
+"""Study tables: yade-batch tables whose columns are parameters of an experiment (its declaration,
+:mod:`ballast.experiments`: the oedometer unless named). They are read by YADE's own reader,
 ``yade.utils.TableParamReader``, so rows, line numbers and run descriptions are yade-batch's, and
-every cell is checked against the declarations before any run starts.
+every cell is checked against the declaration before any run starts. This module is the one reader of
+the tables: a study reads them with :class:`Table`, a run of one row (YADE_BATCH=table:line) with
+:func:`tableRow`.
 """
 import atexit
 import contextlib
 import io
 import itertools
+import math
 import os
 import re
 import shutil
@@ -15,16 +18,11 @@ import tempfile
 import warnings
 
 from ..names import runDirName
-from ..oedometer.parameters import PARAMS, check
 from ..params import ParamError, literal
-from .options import StudyError
+from .options import StudyError, experimentDeclaration
 
 # Where Debian 12's yade keeps its Python modules (the dist-packages link of python3-yade is broken).
 YADE_PY = '/usr/lib/x86_64-linux-gnu/yade-double/py'
-# Set by the study for every run: not table columns.
-STUDY_SETS = ('results', 'runId', 'packingDir')
-
-
 def tableReader():
     """yade.utils.TableParamReader in plain /usr/bin/python3. Importing YADE boots it (measured with
     YADE 2023.02a on Debian 12: 0.5 s, once a process). What else it does: it prints a banner on
@@ -46,17 +44,17 @@ def tableReader():
 
 class Table:
     """A yade-batch table as yade-batch reads it. ``rows``: [(line, {column: cell text})] with the
-    file's 1-based line numbers, '=' resolved; ``columns`` as YADE names them ('!' of run-id columns
-    removed unless there is a description column); ``runId(line)``: the row's description (the
-    description column, else name=value of the 'name!' columns, else of all columns) made a directory
-    name by :func:`ballast.names.runDirName`.
+    file's 1-based line numbers, '=' resolved (``byLine``: the same by line); ``columns`` as YADE
+    names them ('!' of run-id columns removed unless there is a description column); ``runId(line)``:
+    the row's description (the description column, else name=value of the 'name!' columns, else of
+    all columns) made a directory name by :func:`ballast.names.runDirName`.
 
     Refused, naming the line, where YADE's reader would fail or guess: an empty table, a row with
     another number of cells than there are column names, '=' on the first row (YADE takes the last
-    row's value), a column twice, two rows with the same run id (YADE appends '__line=N__', an id
-    that changes when lines move)."""
+    row's value), a column twice, and (unless ids=False: a run of one row needs no run ids) two rows
+    with the same run id (YADE appends '__line=N__', an id that changes when lines move)."""
 
-    def __init__(self, path, text=None):
+    def __init__(self, path, text=None, ids=True):
         self.path = path
         if text is None:
             with open(path) as fh:
@@ -89,9 +87,10 @@ class Table:
         if len(self.columns) != len(heads):
             raise StudyError('%s:%d: a column appears twice in %s' % (path, head, ' '.join(heads)))
         self.rows = [(n, {c: values[n][c] for c in self.columns}) for n in sorted(values)]
+        self.byLine = dict(self.rows)
         self.ids = {}
         seen = {}
-        for n, _ in self.rows:
+        for n, _ in self.rows if ids else ():
             desc = values[n]['description']
             if not self.hasDescription and desc.endswith('__line=%d__' % n):  # YADE's mark of a repeat
                 desc = desc[:-len('__line=%d__' % n)]
@@ -109,23 +108,31 @@ class Table:
         """The columns that are parameters (not the description, not yade-batch's !COLUMNS)."""
         return [c for c in self.columns if c != 'description' and not c.startswith('!')]
 
-    def check(self):
-        """{line: every parameter of its run} (ballast.oedometer.parameters.check of the row's cells),
-        before any run starts. Columns that are no parameter, and every bad cell, are refused
-        together in one StudyError naming table, line, column and value."""
+    def cells(self, line):
+        """{column: cell text} of the parameters the row on `line` sets: the parameter columns
+        (parameterColumns), cells '*' left out (yade-batch's 'the default')."""
+        row = self.byLine[line]
+        return {c: row[c] for c in self.parameterColumns() if row[c] != '*'}
+
+    def check(self, declaration=None):
+        """{line: every parameter of its run} (the experiment's check of the row's cells; `declaration`:
+        a name or a Declaration, default the oedometer), before any run starts. Columns that are no
+        parameter or that the study sets itself, and every bad cell, are refused together in one
+        StudyError naming table, line, column and value."""
+        d = experimentDeclaration(declaration)
         cols = self.parameterColumns()
-        unknown = [c for c in cols if c not in PARAMS]
+        unknown = [c for c in cols if c not in d.params]
         if unknown:
-            raise StudyError('%s: column(s) %s are not parameters of the oedometer; parameters: %s' % (
-                self.path, ', '.join(unknown), ', '.join(PARAMS)))
-        ours = [c for c in cols if c in STUDY_SETS]
+            raise StudyError('%s: column(s) %s are not parameters of the %s; parameters: %s' % (
+                self.path, ', '.join(unknown), d.name, ', '.join(d.params)))
+        ours = [c for c in cols if c in d.studySets()]
         if ours:
             raise StudyError('%s: column(s) %s are set by the study for every run; remove them from the table' % (
                 self.path, ', '.join(ours)))
         params, bad = {}, []
         for n, row in self.rows:
             try:
-                params[n] = check({c: row[c] for c in cols}, text=True)
+                params[n] = d.check(self.cells(n), text=True)
             except ParamError as e:
                 if e.name in row:
                     bad.append('%s:%d: column %s, value %s: %s' % (self.path, n, e.name, row[e.name], e))
@@ -137,9 +144,35 @@ class Table:
         return params
 
 
-def cellValue(column, cell):
-    """A cell as the oedometer reads it (a parameter's own parser; other columns as literals)."""
-    return PARAMS[column].fromText(cell) if column in PARAMS else literal(cell)
+def tableRow(path, line, declaration=None):
+    """The row on `line` of the table at `path` as a run of it (YADE_BATCH=path:line) reads it:
+    {parameter: cell text} (Table.cells: no description, no yade-batch !COLUMNS, no '*' cells), read
+    as the study reads the table. Every column must be a parameter of the experiment (`declaration`: a
+    name or a Declaration, default the oedometer) and every cell readable by the eval of YADE's
+    readParamsFromTable: ParamError naming the column, the cell and what is allowed. The cells stay
+    text; the experiment's check(values, text=True) turns them into values. A line without a row, or a
+    table YADE would misread, raise StudyError."""
+    d = experimentDeclaration(declaration)
+    table = Table(path, ids=False)
+    if line not in table.byLine:
+        raise StudyError('%s: line %r holds no row; rows are on lines %s' % (path, line, ','.join(map(str, table.byLine))))
+    cells = table.cells(line)
+    for col, raw in cells.items():
+        if col not in d.params:
+            raise ParamError(col, '%s: %s is not a parameter (a column of %s); parameters: %s' % (
+                d.owner, col, path, ', '.join(d.params)))
+        try:
+            eval(raw, dict(math.__dict__))
+        except Exception:
+            raise ParamError(col, "%s: cannot read %s = %r from %s:%d (numbers as they are, text quoted: 'planar4')" % (
+                d.owner, col, raw, path, line)) from None
+    return cells
+
+
+def cellValue(column, cell, declaration=None):
+    """A cell as the experiment reads it (a parameter's own parser; other columns as literals)."""
+    params = experimentDeclaration(declaration).params
+    return params[column].fromText(cell) if column in params else literal(cell)
 
 
 def gridValues(spec):
@@ -160,9 +193,10 @@ def gridValues(spec):
     return name, out
 
 
-def gridTable(axes, fixed=(), comments=(), command=''):
+def gridTable(axes, fixed=(), comments=(), command='', declaration=None):
     """The text of a table with every combination of the values of `axes` (NAME=VALUES, the first
-    varies slowest) and the `fixed` columns (NAME=V); refused like a table to run if a row is bad."""
+    varies slowest) and the `fixed` columns (NAME=V); refused like a table to run (Table.check with
+    `declaration`) if a row is bad."""
     axes = [gridValues(s) for s in axes]
     fixed = [gridValues(s) for s in fixed]
     for name, vals in fixed:
@@ -174,5 +208,5 @@ def gridTable(axes, fixed=(), comments=(), command=''):
     text = ''.join('# %s\n' % c for c in comments) + ('# written by: %s\n' % command if command else '')
     for r in [names] + rows:
         text += ' '.join(x.ljust(w) for x, w in zip(r, widths)).rstrip() + '\n'
-    Table('grid', text).check()  # what it writes must run
+    Table('grid', text).check(declaration)  # what it writes must run
     return text, len(rows)

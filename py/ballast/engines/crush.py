@@ -1,0 +1,140 @@
+"""Bulk crushing, section 2 of the paper (eqs. 1-4, Fig. 1): a grain whose criterion stress (the von
+Mises stress of its fabric stress, eqs. 2-3, by default) exceeds its strength f_t = ft0 / r^m (eq. 4)
+is replaced by the fragments of a pattern of Fig. 1, inside it. The decision for all grains is the C++
+core's (pkg/BallastCrushEngine.cpp); fatigue (docs/fatigue.md) and what follows a replacement
+(energy snapshots, growth with keep='volume') are components of their own."""
+import numpy as np
+from yade import O, Vector3, utils
+
+from .. import _ballast, energy, harvest, runtime
+from ..geometry import sphereVolume
+from ..params import CRUSH
+from .base import BallastEngine, docstring
+from .fatigue import FatigueState
+from .replacements import ENERGY_AFTER_STEPS, Replacements
+
+
+@runtime.persistent('BallastCrushEngine')
+class BallastCrushEngine(BallastEngine):
+    _params = CRUSH
+    _outputs = {
+        'nCrushed': (0, 'grains crushed so far'),
+        'volumeLost': (0.0, 'grain volume lost by crushing [m^3]'),
+        'massLost': (0.0, 'grain mass lost by crushing [kg]'),
+        'events': ([], 'one dict per crushed grain: kind, t [s], iter, id, pos [m], radius [m], value (sigma_e [Pa]), '
+                       'strength (f_t [Pa]; f_t (1 - D) with fatigue), newIds; energyBefore, energyAfter (the first '
+                       'check at least %d steps after) and with keep=volume energyGrown: [kinetic, elastic] [J] of '
+                       'the grain or its fragments, its neighbours before the crush and those of the fragments '
+                       '(ballast.energy)' % ENERGY_AFTER_STEPS),
+        'nChecks': (0, 'checks run so far'),
+        'checkSeconds': (0.0, 'wall time spent in checks [s]'),
+        'maxStressRatio': (0.0, 'largest sigma_e / f_t over the grains at the last check [-]'),
+        'maxCrushableRatio': (0.0, 'largest sigma_e / f_t over the grains that can crush (r >= rMin) at the last '
+                                   'check, 0 if none [-] (fragments below rMin may be far above their f_t)'),
+        'nFatigueCrushed': (0, 'grains crushed below their undamaged strength (sigma_e <= f_t), by fatigue damage'),
+        'maxDamage': (0.0, 'largest fatigue damage D over the grains at the last check [-]'),
+    }
+
+    def __init__(self, **kw):
+        BallastEngine.__init__(self, **kw)
+        self.__dict__['_fatigue'] = FatigueState()
+        self.__dict__['_replacements'] = Replacements()
+
+    def _componentState(self):
+        d = self.__dict__
+        return {'replacements': d['_replacements'].state(), 'fatigue': d['_fatigue'].state()}
+
+    def _setComponentState(self, s):
+        self.__dict__['_replacements'].setState(s['replacements'])
+        self.__dict__['_fatigue'].setState(s['fatigue'])
+
+    def fatigueState(self, ids=None):
+        """Fatigue state by body id, an (n,4) array: damage D [-], running extreme of s [-], rising (1/0),
+        damaging peaks; rows of ids (default: every id up to the largest seen)."""
+        return self.__dict__['_fatigue'].of(ids)
+
+    def _summary(self):
+        return 'nCrushed=%d volumeLost=%.4g m^3 massLost=%.4g kg' % (self.nCrushed, self.volumeLost, self.massLost)
+
+    def strengthFactors(self, ids):
+        """Each grain's Weibull strength factor w (docs/strength.md): a function of (seed, body id, modulus),
+        so the same after O.save/O.load and drawn afresh for fragments (new ids); None without scatter."""
+        if self.weibullModulus == 0:
+            return None
+        return _ballast.weibullFactors(self.seed, np.asarray(ids, dtype=np.int64), self.weibullModulus)
+
+    def evaluate(self, ids, radii):
+        """(the criterion's stress [Pa], the strength f_t [Pa], crush) of the grains `ids` now, without fatigue."""
+        fMax = harvest.largestContactForces(ids) if self.criterion == 'maxContactForce' else None
+        return _ballast.crushCheck(harvest.stresses(ids), radii, self.ft0, self.m, self.rMin, self.criterion, fMax,
+                                   self.strengthFactors(ids))
+
+    def _check(self, tab, ids, radii):
+        if len(ids) == 0:
+            return False
+        se, ft, crush = self.evaluate(ids, radii)
+        d = self.__dict__
+        ratio = se / ft
+        d['maxStressRatio'] = float(np.max(ratio))
+        crushable = radii >= self.rMin  # eq. 1's other condition
+        d['maxCrushableRatio'] = float(np.max(ratio[crushable])) if crushable.any() else 0.0
+        strength = ft
+        if self.fatigue:  # docs/fatigue.md: a sample of s for every grain, crush when s > 1 - D
+            crush, damage = d['_fatigue'].check(ratio, radii, ids, self.fatigueExponent, self.fatigueEndurance,
+                                                self.fatigueHysteresis, self.rMin)
+            strength = ft * (1 - damage)
+            d['maxDamage'] = float(np.max(damage))
+        changed = d['_replacements'].recordEnergies(d['_events'])
+        hit = np.flatnonzero(crush)
+        if 0 < self.maxPerCheck < len(hit):  # sequential crushing: the most overloaded first
+            hit = hit[np.argsort(-(se[hit] / strength[hit]), kind='stable')[:self.maxPerCheck]]
+        if len(hit):
+            pw0 = self._dtBefore()
+            for k in hit:
+                if se[k] <= ft[k]:
+                    d['nFatigueCrushed'] += 1
+                newIds = self._replace(tab, int(ids[k]), float(radii[k]), float(se[k]), float(strength[k]))
+                if self.fatigue:  # fragments start undamaged (docs/fatigue.md)
+                    d['_fatigue'].fresh(newIds)
+            tab.commit()
+            self._adjustDt(pw0)
+            changed = True
+        return d['_replacements'].grow(tab, self.growTime, d) or changed
+
+    def _replace(self, tab, bid, r, se, ft):
+        """Section 2: the grain is erased and replaced by fragments inside it (Fig. 1)."""
+        b = O.bodies[bid]
+        st, mat, color, mask = b.state, b.material, b.shape.color, b.groupMask
+        pos, vel, angVel, mass = Vector3(st.pos), Vector3(st.vel), Vector3(st.angVel), st.mass
+        neighbours = energy.partners([bid])
+        before = energy.snapshot([bid])  # kinetic and elastic energy of the grain and its neighbours
+        frags = _ballast.placeFragments(self.pattern, (pos[0], pos[1], pos[2]), r, self.seed, self._counter)
+        self.__dict__['_counter'] += 1
+        O.bodies.erase(bid)
+        bodies = [utils.sphere(Vector3(x, y, z), rf, material=mat, color=color, mask=mask) for x, y, z, rf in frags]
+        if self.keep == 'mass':  # denser fragments: the parent's mass; its momentum then too (centroid at its centre)
+            scale = mass / sum(nb.state.mass for nb in bodies)
+            for nb in bodies:
+                nb.state.mass *= scale
+                nb.state.inertia = nb.state.inertia * scale
+        newIds, newMass = [], 0.0
+        for nb in bodies:
+            # rigid-body velocity of the parent at the fragment's centre: momentum kept with the mass kept
+            nb.state.vel = vel + angVel.cross(nb.state.pos - pos)
+            nb.state.angVel = angVel
+            newMass += nb.state.mass
+            newIds.append(O.bodies.append(nb))
+        tab.replaced(bid, newIds, frags[:, 3], mask)
+        d = self.__dict__
+        d['nCrushed'] += 1
+        d['volumeLost'] += sphereVolume(r) - float(np.sum(sphereVolume(frags[:, 3])))
+        d['massLost'] += mass - newMass
+        self._event('crush', bid, pos, r, se, ft, newIds)
+        k = len(d['_events']) - 1
+        d['_events'][k]['energyBefore'] = before
+        d['_replacements'].added(k, newIds, neighbours, self.keep == 'volume',
+                                 r ** 3 / float(np.sum(frags[:, 3] ** 3)))
+        return newIds
+
+
+docstring(BallastCrushEngine, 'Bulk crushing, section 2 (eqs. 1-4, Fig. 1).')

@@ -1,0 +1,54 @@
+"""Fatigue of the grains (docs/fatigue.md): the state of every grain by body id, an (n, 4) array of
+damage D [-], the running extreme of s = sigma_e / f_t [-], rising (1/0) and the damaging peaks;
+the Basquin-Miner update is the C++ core's ``fatigueCheck``."""
+import base64
+
+import numpy as np
+
+from .. import _ballast
+
+FRESH = (0.0, 0.0, 1.0, 0.0)  # a new grain: undamaged, no extreme yet, rising, no peak
+
+
+class FatigueState:
+    def __init__(self):
+        self.rows = None   # (n, 4) by body id, grown on demand
+
+    def of(self, ids=None):
+        """Rows of ids (default: every id up to the largest seen), fresh where never seen."""
+        F = self.rows if self.rows is not None else np.empty((0, 4))
+        if ids is None:
+            return F.copy()
+        ids = np.asarray(ids, dtype=np.int64)
+        out = np.tile(FRESH, (len(ids), 1))
+        known = ids < len(F)
+        out[known] = F[ids[known]]
+        return out
+
+    def grown(self, ids):
+        """The state array, grown to hold every id of `ids` (new rows fresh)."""
+        F = self.rows
+        need = int(np.max(ids)) + 1 if len(ids) else 0
+        if F is None or len(F) < need:
+            G = np.tile(FRESH, (max(need, 2 * (0 if F is None else len(F))), 1))
+            if F is not None:
+                G[:len(F)] = F
+            self.rows = F = G
+        return F
+
+    def check(self, ratio, radii, ids, exponent, endurance, hysteresis, rMin):
+        """One check of s = ratio for the grains ids: (crush, the damage D of each) (docs/fatigue.md)."""
+        F = self.grown(ids)
+        F[ids], crush = _ballast.fatigueCheck(ratio, radii, F[ids], exponent, endurance, hysteresis, rMin)
+        return crush, F[ids, 0]
+
+    def fresh(self, ids):
+        """Fragments start undamaged."""
+        self.grown(np.asarray(ids))[ids] = FRESH
+
+    def state(self):
+        """Bitwise: base64 of the float64 array (None before the first check)."""
+        return None if self.rows is None else base64.b64encode(np.ascontiguousarray(self.rows).tobytes()).decode('ascii')
+
+    def setState(self, s):
+        self.rows = None if s is None else np.frombuffer(base64.b64decode(s), dtype=float).reshape(-1, 4).copy()

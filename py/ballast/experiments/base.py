@@ -1,0 +1,183 @@
+"""The base of every experiment: parameters declared once and checked once (a frozen
+:class:`ballast.params.Parameters`), a run directory, phases with progress, a lifecycle and saving and
+reopening through :mod:`ballast.runtime`.
+
+    exp = SomeExperiment(seed=2)     # a bad value raises ParamError here, before any work
+    exp.prepare()                    # the sample
+    exp.run() / exp.load()           # the experiment's own loading; writes the run directory
+    exp.runUntil(lambda: ..., tEnd)  # or step the scene until a condition, with progress lines
+    exp.summary()                    # what summary.json holds
+    exp.save(path); SomeExperiment.reopen(path, readOnly=True)
+
+A subclass gives ``NAME``, ``Parameters`` (its Parameters class), ``REOPEN_PARAMS`` (what a reopened
+run may change: where and how it reports, not the physics), ``prepare()``, ``summary()``, and its
+state (``state()``, ``fromState()``); its pieces are registered objects of their own.
+"""
+import os
+import time
+
+from yade import O
+
+from .. import runtime
+from ..names import runDirName
+from ..params import ParamError, requireWritableDir
+from .phases import Phases
+
+
+@runtime.persistent('RunDirectory')
+class RunDirectory:
+    """<results>/<run id>/, created atomically when first needed; an existing one is never reused (a
+    suffix -2, -3, ...). readOnly: never created (a reopened run that is only inspected)."""
+
+    def __init__(self, results, runId, readOnly=False):
+        self.results, self.wanted, self.readOnly = results, runId, readOnly
+        self.runId = self.path = self.previous = None
+
+    def create(self):
+        """The folder's path, made now if it is not yet."""
+        if self.path is not None:
+            return self.path
+        if self.readOnly:
+            raise RuntimeError('this run was reopened read-only (readOnly=True): it writes no files; reopen it with '
+                               'readOnly=False to go on')
+        rid = runDirName(self.wanted or O.tags['d.id'])
+        os.makedirs(self.results, exist_ok=True)
+        for k in range(1, 10000):
+            name = rid if k == 1 else '%s-%d' % (rid, k)
+            path = os.path.join(self.results, name)
+            try:
+                os.mkdir(path)
+            except FileExistsError:
+                continue
+            self.runId, self.path = name, path
+            return path
+        raise RuntimeError('no free run directory for %s in %s' % (rid, self.results))
+
+    def file(self, name):
+        return os.path.join(self.create(), name)
+
+    def state(self):
+        return {'results': self.results, 'wanted': self.wanted, 'runId': self.runId, 'path': self.path}
+
+    @classmethod
+    def fromState(cls, s, ref=None):
+        """A run that goes on never writes into the folder of the run it continues: a new one, named after it."""
+        d = cls(s['results'], s['runId'] or s['wanted'])
+        d.previous = s['path']
+        return d
+
+
+class Experiment:
+    """See the module doc."""
+
+    NAME = 'experiment'
+    Parameters = None
+    REOPEN_PARAMS = ()
+
+    def __init__(self, parameters=None, **params):
+        if parameters is not None and (params or not isinstance(parameters, self.Parameters)):
+            raise TypeError('%s: give parameters=%s(...) (checked already) or the parameters by name, not both'
+                            % (self.NAME, self.Parameters.__name__))
+        self.p = parameters if parameters is not None else self.Parameters.check(params)
+        self.phases = Phases(self.p['progress'], self.NAME)
+        self.dir = RunDirectory(self.p['results'], self.p['runId'])
+        self.saved = []              # state files written so far
+        self.wallBefore, self.cpuBefore = 0.0, 0.0  # of the runs this one continues
+        self.started, self.cpuStarted = time.time(), time.process_time()
+        self.adopt()
+
+    # ------------------------------------------------------------------ the scene
+    def pieces(self):
+        """The registered objects the experiment consists of (subclasses add theirs)."""
+        return [self, self.phases, self.dir]
+
+    def adopt(self):
+        """Register the experiment and its pieces in the current scene."""
+        for obj in self.pieces():
+            if obj is not None:
+                runtime.register(obj)
+
+    def newScene(self):
+        """O.reset() for a piece that builds a scene; the experiment lives in the new one."""
+        O.reset()
+        self.adopt()
+
+    @property
+    def runId(self):
+        return self.dir.runId
+
+    @property
+    def out(self):
+        return self.dir.path
+
+    def checkOutputs(self):
+        """Before any work: the results folder can be created and written to."""
+        requireWritableDir(self.Parameters.OWNER, 'results', self.p['results'])
+
+    def runUntil(self, condition=None, tEnd=None, phase='run', checkEvery=200, **progress):
+        """Step the scene until condition() is true (checked every checkEvery steps in the step loop, so where
+        it stops never depends on the machine) or O.time reaches tEnd [s], with progress lines. progress:
+        simSpan, simStart, extra, afterChunk (see Phases.run)."""
+        if condition is None and tEnd is None:
+            raise ParamError('tEnd', '%s.runUntil: give a condition or tEnd [s], else it never ends' % self.NAME)
+        self.phases.run(phase, condition, tEnd=tEnd, checkEvery=checkEvery, **progress)
+
+    def say(self, msg):
+        self.phases.say(msg)
+
+    def seconds(self):
+        """(wall, CPU) seconds of this run and those it continues."""
+        return (self.wallBefore + time.time() - self.started, self.cpuBefore + time.process_time() - self.cpuStarted)
+
+    # ------------------------------------------------------------------ saving and reopening
+    def save(self, path):
+        """O.save(path): the scene with the state of the experiment, its pieces and the engines."""
+        self.saved.append(path)
+        O.save(path)
+
+    def baseState(self):
+        wall, cpu = self.seconds()
+        return {'params': dict(self.p), 'saved': self.saved, 'wallSeconds': wall, 'cpuSeconds': cpu,
+                'phases': runtime.ref(self.phases), 'dir': runtime.ref(self.dir)}
+
+    def setBaseState(self, s, ref):
+        self.p = self.Parameters.check(s['params'])
+        self.phases, self.dir = ref(s['phases']), ref(s['dir'])
+        self.saved = list(s['saved'])
+        self.wallBefore, self.cpuBefore = s['wallSeconds'], s['cpuSeconds']
+        self.started, self.cpuStarted = time.time(), time.process_time()
+
+    @classmethod
+    def fromScene(cls, readOnly=False, **overrides):
+        """The experiment saved in the current scene, rebuilt (ballast.runtime.restore). It writes into a new
+        run directory (<results>/<run id>-2, ... unless results or runId are given) when it first writes;
+        readOnly=True: never (for inspecting a finished run)."""
+        bad = sorted(k for k in overrides if k not in cls.REOPEN_PARAMS)
+        if bad:
+            raise TypeError('%s.reopen: %s cannot be changed in a saved run (only %s)' % (
+                cls.NAME, ', '.join(bad), ', '.join(cls.REOPEN_PARAMS)))
+        found = [o for o in runtime.restore().values() if isinstance(o, cls)]
+        if len(found) != 1:
+            raise RuntimeError('%s: this scene holds %d saved %s experiments (O.tags[%r]); expected one' % (
+                cls.NAME, len(found), cls.NAME, runtime.TAG))
+        exp = found[0]
+        old = exp.dir
+        exp.p = exp.p.replace(**overrides)
+        if readOnly or 'results' in overrides or 'runId' in overrides:
+            exp.dir = RunDirectory(exp.p['results'], overrides.get('runId', old.wanted), readOnly)
+            runtime.unregister(old)
+            exp.adopt()
+        exp.phases.progressSeconds = exp.p['progress']
+        exp.reopened()
+        return exp
+
+    def reopened(self):
+        """After fromScene (subclasses: say where the run goes on)."""
+
+    @classmethod
+    def reopen(cls, path, readOnly=False, **overrides):
+        """O.load(path) of a state saved by a run, and its experiment back (see fromScene)."""
+        if not os.path.isfile(path):
+            raise FileNotFoundError('%s.reopen: no such state file: %s' % (cls.NAME, path))
+        O.load(path)
+        return cls.fromScene(readOnly=readOnly, **overrides)

@@ -1,0 +1,42 @@
+"""What a study needs to know of an experiment, without YADE (:class:`Declaration`)."""
+
+
+class Declaration:
+    """An experiment as the study machinery sees it.
+
+    name        the experiment's name (its folder under ballast/experiments/)
+    owner       how its errors name it (its Parameters' OWNER, 'Oedometer'); default the name
+    params      {name: Param}: the parameters, each declared once (units, ranges, defaults)
+    check       check(values, text=False) -> the checked parameters (text=True: cells of a table)
+    script      the command line that runs one realization, relative to the repository
+    sets        {'results': name, 'runId': name, 'sampleStore': name or None}: the parameters the study
+                sets for every run (where the run writes, its id, where prepared samples are stored)
+    sampleKey   sampleKey(p) -> the file name of the prepared sample the run p uses, or None: runs with the
+                same name share one sample (the study builds it once)
+    cost        cost(p) -> a number that orders runs by their cost: the cheapest of a group builds the sample
+    recordTimes recordTimes(p) -> loading times [s] whose neighbouring rows of checks.csv a record keeps
+    results     [(name, unit)]: the results of summary.json (or derived) a study tabulates, a column of
+                runs.csv each
+    statistics  [name]: the results whose mean and standard deviation per value stats.csv gives
+    derived     derived(run) -> {name: value}: results a run's files give beyond summary.json
+                (run: a ballast.study.data.Run), merged into its summary when a study is read
+    response    (name, ...): the result the analyses test, in order of preference: the first one every
+                run of a study has (runs of older versions may lack the later results)
+    """
+
+    def __init__(self, name, params, check, script, sets, sampleKey=None, cost=None, recordTimes=None, results=(),
+                 statistics=(), derived=None, response=(), owner=None):
+        self.name, self.params, self.check, self.script, self.sets = name, params, check, script, sets
+        self.owner = owner or name
+        self.sampleKey = sampleKey or (lambda p: None)
+        self.cost = cost or (lambda p: 0.0)
+        self.recordTimes = recordTimes or (lambda p: ())
+        self.results, self.statistics, self.response = list(results), list(statistics), tuple(response)
+        self.derived = derived or (lambda run: {})
+
+    def studySets(self):
+        """The parameter names a study sets itself (a table may not have them as columns)."""
+        return tuple(v for v in self.sets.values() if v)
+
+    def __repr__(self):
+        return '<Declaration %s: %d parameters, script %s>' % (self.name, len(self.params), self.script)

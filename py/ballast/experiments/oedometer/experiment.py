@@ -1,0 +1,328 @@
+"""The oedometric test of sections 4-5 as an experiment on the base
+:class:`ballast.experiments.base.Experiment`: parameters (checked when it is built), then prepare()
+(the packing), load() (the load cycle of eq. 8 with both engines) and summary().
+
+    from ballast.oedometer import Oedometer
+    run = Oedometer(seed=2, f=4, pattern=14)
+    run.prepare()
+    run.load()
+    run.summary()
+
+The pieces are registered objects (:mod:`ballast.runtime`) that can be replaced without editing the
+package: ``packing`` (default :class:`StoredPacking`; returns the :class:`Rig`), ``load``
+(:class:`PlateLoad`, :class:`ServoLoad` or :class:`DisplacementLoad` by ``loadMode``), ``outputs``
+(:class:`Outputs`, which reads the run through a :class:`Probe`).
+
+The run saves itself at the start and at the end of loading (and every ``saveEvery``).
+``Oedometer.reopen(path)`` loads such a state in any process and gives the experiment back, ready to
+``load()`` on (``readOnly=True``: to inspect it, writing nothing); a plain ``O.load(path)`` followed by
+``O.run()`` rebuilds it at its first callback.
+"""
+import math
+import os
+
+import numpy as np
+from yade import O
+
+from ... import grading, runtime
+from ...engines import BallastAbrasionEngine, BallastCrushEngine
+from ...geometry import sphereVolume
+from ...names import fmtTime
+from ...params import CRUSH, validate
+from .. import grains
+from ..base import Experiment
+from .loading import MODES
+from .outputs import Outputs
+from .packing import StoredPacking
+from .parameters import OWNER, PARAMS, OedometerParameters
+from .probe import Probe, counter, degradingEngines, engine
+
+SAVER = 'oedoSaver'
+
+
+@runtime.persistent('Oedometer')
+class Oedometer(Experiment):
+    """One realization of the paper's oedometric test. Keyword arguments: any parameter of
+    :data:`ballast.oedometer.parameters.PARAMS` (a bad value raises ParamError here) or
+    ``parameters=check(...)`` (checked already), and the pieces ``packing``, ``load``, ``outputs``."""
+
+    NAME = 'oedometer'
+    Parameters = OedometerParameters
+    # parameters a reopened run may change: where and how it reports, not the physics
+    REOPEN_PARAMS = ('results', 'runId', 'progress', 'vtk', 'saveEvery', 'timing', 'cycles')
+
+    def __init__(self, packing=None, load=None, outputs=None, parameters=None, **params):
+        self.packing = packing if packing is not None else StoredPacking()
+        self.outputs = outputs if outputs is not None else Outputs()
+        self.rig = self.initial = self.probe = None
+        self.loading = load
+        self.maxProtrusion, self.nEscaped = 0.0, 0
+        Experiment.__init__(self, parameters, **params)
+        if self.loading is None:
+            self.loading = MODES[self.p['loadMode']]()
+            self.adopt()
+
+    def __repr__(self):
+        return '<Oedometer %s: %s>' % (self.runId, ', '.join('%s=%r' % (k, self.p[k]) for k in ('seed', 'f', 'Tc', 'ft0',
+                                                                                                'pattern')))
+
+    @property
+    def T(self):
+        return self.p.T
+
+    @property
+    def cylinder(self):
+        return self.rig.cylinder if self.rig is not None else None
+
+    def pieces(self):
+        return Experiment.pieces(self) + [self.packing, self.loading, self.outputs, self.rig]
+
+    # ------------------------------------------------------------------ the experiment
+    def checkOutputs(self):
+        """Before any work: the results folder and the packing store can be created and written to."""
+        Experiment.checkOutputs(self)
+        if hasattr(self.packing, 'checkOutputs'):
+            self.packing.checkOutputs(self)
+
+    def prepare(self):
+        """The packing (built, or loaded from the store), settled in the cylinder."""
+        if self.out is None:
+            self.checkOutputs()
+            self.dir.create()
+            self.say('run %s -> %s' % (self.runId, self.out))
+        self.adopt()
+        self.rig = self.packing.prepare(self)
+        self.adopt()
+        return self
+
+    def load(self, cycles=None):
+        """Load until the run has `cycles` cycles in all (eq. 8, then between Fmax and Fmin; a state saved
+        mid-run goes on to that number), or, if it has them already, one more; `cycles` given: that many
+        more. Then write every output and save the state. Returns the summary."""
+        p = self.p
+        if cycles is not None:
+            cycles = validate(OWNER + '.load', {'cycles': PARAMS['cycles']}, 'cycles', cycles)
+        if self.initial is None:
+            if self.rig is None:
+                self.prepare()
+            self.startLoading()
+        t0 = self.loading.t0
+        done = math.floor((O.time - t0 + 0.5 * O.dt) / self.T)
+        total = done + cycles if cycles is not None else (p['cycles'] if done < p['cycles'] else done + 1)
+        tStart, tEnd = O.time, t0 + total * self.T
+        if p['stopAt'] > 0 and done == 0:  # an early stop, a step past the crushing check after stopAt T
+            tEnd = min(tEnd, t0 + p['stopAt'] * self.T + 1.5 * (p['Tc'] or O.dt))
+        self.runUntil(self.loading.done, tEnd=tEnd, phase='load', simSpan=tEnd - tStart, simStart=tStart,
+                      afterChunk=self.checkContainment,
+                      extra=lambda: 'cycle %d/%d  F=%.0f kN  delta=%.1f mm  crushed %d  abraded %d' % (
+                          min(math.floor((O.time - t0) / self.T) + 1, total), total,
+                          self.loading.force() / 1e3, self.loading.delta() * 1e3, self.counter('crush', 'nCrushed'),
+                          self.counter('abrasion', 'nAbraded')))
+        return self.finish()
+
+    def finish(self):
+        """The last row, the state at the end, every output file; returns the summary."""
+        self.outputs.record()  # the last row, at the end of the cycle
+        self.outputs.cycleEnd()
+        end = os.path.join(self.out, 'state-end.yade.gz')
+        self.save(end)
+        try:
+            s = self.summary()
+            self.outputs.finish(s)
+        except Exception as e:  # hours of loading are in the state: say how to get the outputs back
+            self.say('the outputs could not be written (%s: %s); the loaded state is saved: e = '
+                     'Oedometer.reopen(%r); e.outputs.finish(e.summary()) writes them' % (type(e).__name__, e, end))
+            raise
+        if self.p['timing']:
+            self._writeTiming()
+        self.say('done in %s: peak F %.0f kN at delta %.2f mm, delta max %.2f mm, %d crushed, %d abraded, %d '
+                 'steps; results in %s' % (fmtTime(s['wallSeconds']), s['peakForce'] / 1e3, s['deltaAtPeak'] * 1e3,
+                                           s['deltaMax'] * 1e3, s['nCrushed'], s['nAbraded'], s['steps'], self.out))
+        return s
+
+    def run(self):
+        """prepare() and load(): the whole realization."""
+        self.prepare()
+        return self.load()
+
+    def startLoading(self):
+        """The start of load(): seat the plate, add the engines and the recorders, save the state."""
+        p = self.p
+        self.loading.start(p, self.rig)
+        self.addEngines()
+        x, r, m = grains.arrays()
+        self.initial = {'massInitial': float(np.sum(m)), 'nGrainsInitial': len(r),
+                        'volumeGrains': float(np.sum(sphereVolume(r))), 'radii': r.tolist(), 'masses': m.tolist()}
+        self.probe = Probe(p, self.loading, self.rig, self.dir, self.initial)
+        self.outputs.start(self.probe)
+        if p['saveEvery'] > 0:  # first in the chain: a state saved before the step begins resumes exactly
+            O.engines = [runtime.callback(self, 'checkpoint', virtPeriod=p['saveEvery'], virtLast=O.time,
+                                          label=SAVER)] + list(O.engines)
+        if p['timing']:
+            O.timingEnabled = True
+        self.say('load: plate at %.4f m on %d grains (%.1f kg, porosity %.3f), F = Fmax/2 [sin(2 pi f t - pi/2) + 1],'
+                 ' Fmax = %.4g N, f = %g Hz, dt = %.2e s' % (self.loading.z0, len(r), self.initial['massInitial'],
+                                                            self.porosity0(), p['Fmax'], p['f'], O.dt))
+        self.save(os.path.join(self.out, 'state-start.yade.gz'))
+
+    def addEngines(self):
+        """BallastCrushEngine and BallastAbrasionEngine after NewtonIntegrator, as the parameters say."""
+        p = self.p
+        extra = []
+        if p['crush']:
+            # every engine parameter the experiment declares (parameters.PARAMS reuses CRUSH's declarations);
+            # the engine scales O.dt with the drop of PWaveTimeStep() after a replacement (eq. 5)
+            own = {k: p[k] for k in CRUSH if k in p}
+            crush = BallastCrushEngine(mask=0, label='crush', **p.crushPeriod(), **own)
+            # checks at loading times k T_c (not at scene times, which include the preparation): where they fall
+            # in the load cycle is then set by T_c and f alone (docs/oedometer.md, "Crushing period")
+            crush.virtLast = self.loading.t0
+            extra.append(crush)
+        if p['abrasion']:
+            extra.append(BallastAbrasionEngine(strength=p['strength'], gamma=p['gamma'], rMin=p['rMin'], mask=0,
+                                               iterPeriod=p['abrasionPeriod'], label='abrasion'))
+        O.engines = O.engines + extra
+
+    def checkpoint(self):
+        """The saver's call (saveEvery): a state at the start of this step."""
+        self.save(os.path.join(self.out, 'state-iter%09d.yade.gz' % O.iter))
+
+    # ------------------------------------------------------------------ engines and grains
+    engine, degradingEngines, counter = staticmethod(engine), staticmethod(degradingEngines), staticmethod(counter)
+
+    def events(self):
+        """The events of both engines, in time order."""
+        return self.probe.events()
+
+    def grading(self):
+        """Percentage passing each sieve before loading and now (Probe.grading)."""
+        return self.probe.grading()
+
+    def porosity0(self):
+        """Porosity under the plate at the start of loading [-]."""
+        return 1 - self.initial['volumeGrains'] / (math.pi * self.cylinder.Rin ** 2 * self.loading.z0)
+
+    def checkContainment(self):
+        """Largest protrusion of a grain out of the cylinder (side, bottom, plate) and the number of
+        grains whose centre left it."""
+        x, r, _ = grains.arrays()
+        if len(r) == 0:
+            return
+        cyl = self.cylinder
+        c = O.bodies[cyl.ids[0]].state.pos - cyl.pos0[0]
+        rho = np.hypot(x[:, 0] - c[0], x[:, 1] - c[1])
+        zTop = self.loading.top()
+        prot = np.maximum.reduce([rho + r - cyl.Rv, c[2] - (x[:, 2] - r), x[:, 2] + r - zTop])
+        self.maxProtrusion = max(self.maxProtrusion, float(prot.max()))
+        self.nEscaped = max(self.nEscaped, int(np.sum((rho > cyl.Rv) | (x[:, 2] < c[2]) | (x[:, 2] > zTop))))
+
+    # ------------------------------------------------------------------ results
+    def summary(self):
+        """What summary.json holds: peak force and displacements, crushes, the mass ledger, timings,
+        the packing and every parameter."""
+        p = self.p
+        wall, cpu = self.seconds()
+        a = np.array(self.outputs.rows)
+        k = int(np.argmax(a[:, 1]))
+        r, m = grains.arrays()[1:]
+        engs = self.degradingEngines()
+        loaded = a[:, 0] >= 0.05 * self.T
+        target = self.loading.target(a[:, 0])
+        steps = self.phases.steps
+        half = min(p.peakTime(), a[-1, 0])  # eq. 8 peaks at T/2
+        F5 = np.where(np.isfinite(a[:, 5]), a[:, 5], a[:, 1]) >= 0.05 * p['Fmax']
+        before, after = self.grading()
+        s = {
+            'runId': self.runId,
+            'peakForce': float(a[k, 1]),
+            'deltaAtPeak': float(a[k, 2]),
+            'deltaAtAppliedPeak': float(np.interp(half, a[:, 0], a[:, 2])),
+            'forceAtAppliedPeak': float(np.interp(half, a[:, 0], a[:, 1])),
+            'seatingDelta': float(a[np.argmax(F5), 2]) if F5.any() else None,
+            'deltaMax': float(np.max(a[:, 2])),
+            'deltaFinal': float(a[-1, 2]),
+            'nCrushed': self.counter('crush', 'nCrushed'),
+            'nAbraded': self.counter('abrasion', 'nAbraded'),
+            'nFatigueCrushed': self.counter('crush', 'nFatigueCrushed'),
+            'volumeLost': float(sum(e.volumeLost for e in engs)),
+            'massInitial': self.initial['massInitial'],
+            'massFinal': float(np.sum(m)),
+            'massLost': float(sum(e.massLost for e in engs)),
+            'wallSeconds': wall,
+            'cpuSeconds': cpu,  # = wall on an idle machine, 1 thread
+            'steps': sum(steps.values()),
+            'stepsByPhase': dict(steps),
+            'wallSecondsByPhase': {k: round(v, 3) for k, v in self.phases.wall.items()},
+            'nGrainsInitial': self.initial['nGrainsInitial'],
+            'nSpheresFinal': len(r),
+            'maxGeneration': int(np.max(self.outputs.grains.generation, initial=0)),
+            'Bg': grading.marsal(before, after),
+            'Br': grading.hardin(before, after),
+            'BBI': grading.bbi(before, after),
+            'lostAsFines': p['lostAsFines'],
+            'plateHeight0': self.loading.z0,
+            'porosity0': self.porosity0(),
+            'cycles': float(a[-1, 0] / self.T),
+            'forceErrorRms': float(np.sqrt(np.mean((a[loaded, 1] - target[loaded]) ** 2))) if loaded.any() else None,
+            'dtFinal': O.dt,
+            # the state at the end (the half-load sweep's columns when stopAt stops the loading early)
+            'forceFinal': float(a[-1, 1]),
+            'appliedFinal': float(a[-1, 5]),
+            'unbalancedFinal': grains.unbalanced(),
+            'vRmsFinal': grains.vRms(),
+            'checkSeconds': {e.label: e.checkSeconds for e in engs},
+            'nChecks': {e.label: e.nChecks for e in engs},
+            'maxProtrusion': self.maxProtrusion,
+            'nEscaped': self.nEscaped,
+            'packingFile': self.packing.state().get('file'),
+            'packingReused': self.packing.state().get('reused'),
+            'prepEscaped': self.packing.state().get('escaped'),
+            'stateFiles': [os.path.basename(f) for f in self.saved],
+            'threads': int(os.environ.get('OMP_NUM_THREADS', 1)),
+            'yade': getattr(getattr(__import__('yade'), 'config', None), 'version', ''),
+            'params': dict(p),
+        }
+        return s
+
+    def _writeTiming(self):
+        import contextlib
+        import io
+        from yade import timing
+        buf = io.StringIO()
+        with contextlib.redirect_stdout(buf):
+            timing.stats()
+        with open(os.path.join(self.out, 'timing.txt'), 'w') as fh:
+            fh.write(buf.getvalue())
+
+    # ------------------------------------------------------------------ saving and reopening
+    def state(self):
+        """Everything the experiment needs to go on after O.load(): JSON-able."""
+        return dict(self.baseState(), packing=runtime.ref(self.packing), loading=runtime.ref(self.loading),
+                    outputs=runtime.ref(self.outputs), rig=runtime.ref(self.rig), initial=self.initial,
+                    maxProtrusion=self.maxProtrusion, nEscaped=self.nEscaped)
+
+    @classmethod
+    def fromState(cls, s, ref):
+        exp = cls.__new__(cls)
+        exp.setBaseState(s, ref)
+        exp.packing, exp.loading, exp.outputs, exp.rig = (ref(s[k]) for k in ('packing', 'loading', 'outputs', 'rig'))
+        exp.initial, exp.maxProtrusion, exp.nEscaped = s['initial'], s['maxProtrusion'], s['nEscaped']
+        exp.probe = None
+        return exp
+
+    def restored(self):
+        """After the runtime rebuilt the scene's objects: the pieces read this run again."""
+        self.loading.bind(self.p)
+        if self.initial is not None:
+            self.probe = Probe(self.p, self.loading, self.rig, self.dir, self.initial)
+            self.outputs.bind(self.probe)
+
+    def reopened(self):
+        self.restored()
+        if not self.dir.readOnly:
+            self.dir.create()
+        self.say('reopened %s at t = %.6f s (loading time %.6f s) -> %s' % (
+            self.dir.wanted, O.time, O.time - self.loading.t0, self.out or 'read only, no run directory'))
+
+
+__all__ = ['Oedometer', 'PARAMS']

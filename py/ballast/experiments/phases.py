@@ -1,0 +1,91 @@
+"""Running the simulation in phases with progress lines: how far (simulated time, % of the phase), how
+fast, time left, and what the phase wants to show; steps and wall seconds counted per phase. Every
+experiment runs through one :class:`Phases` (its ``runUntil``)."""
+import math
+import time
+
+from yade import O
+
+from .. import runtime
+from ..names import fmtTime
+
+
+@runtime.persistent('Phases')
+class Phases:
+    """Runs O in chunks until a phase ends. Where a phase ends never depends on the machine's speed:
+    the end test `done()` runs in a PyRunner every checkEvery steps, which pauses O, so a seed always
+    gives the same packing and the same run."""
+
+    CHUNK_WALL = 2.0  # [s] wall time of a chunk of O.run(n, True) (each costs ~40 ms of overhead)
+    LABEL = 'phaseEnd'
+
+    def __init__(self, progressSeconds, name):
+        self.progressSeconds, self.name = progressSeconds, name
+        self.started = time.time()
+        self.steps, self.wall = {}, {}
+        self.done, self.finished = None, False
+
+    def say(self, msg):
+        print('[%s %7.1fs] %s' % (self.name, time.time() - self.started, msg), flush=True)
+
+    def check(self):
+        """The PyRunner's call: pause O once the phase is done."""
+        if self.done is not None and self.done():
+            self.finished = True
+            O.pause()
+
+    def run(self, phase, done=None, tEnd=None, simSpan=None, simStart=None, extra=None, checkEvery=200,
+            afterChunk=None):
+        """Run until O.time reaches tEnd [s] or done() is true, a progress line every progressSeconds.
+        simSpan: planned simulated duration [s] of the phase, from simStart (for % and time left)."""
+        w0, i0 = time.time(), O.iter
+        lastPrint = time.time()
+        chunk = 500
+        hist = []  # (wall, sim) of the last 30 s: the rate behind the time left
+        self.finished, self.done = False, done
+        if done is not None:
+            O.engines = O.engines + [runtime.callback(self, 'check', iterPeriod=checkEvery, label=self.LABEL)]
+        try:
+            while not self.finished:
+                if tEnd is not None and O.time >= tEnd - 0.5 * O.dt:
+                    break
+                tw = time.time()
+                n = chunk if tEnd is None else max(1, min(chunk, int(math.ceil((tEnd - O.time) / O.dt - 0.5))))
+                O.run(n, True)
+                if n == chunk:
+                    chunk = int(min(max(chunk * self.CHUNK_WALL / max(time.time() - tw, 1e-3), 100), 50000))
+                if afterChunk is not None:
+                    afterChunk()
+                now = time.time()
+                hist.append((now, O.time))
+                hist = [h for h in hist if now - h[0] < 30] or hist[-1:]
+                if now - lastPrint >= self.progressSeconds:
+                    lastPrint = now
+                    self.say(self._line(phase, hist, simSpan, simStart, extra))
+        finally:
+            if done is not None:
+                O.engines = [e for e in O.engines if e.label != self.LABEL]
+            self.done = None
+            self.steps[phase] = self.steps.get(phase, 0) + O.iter - i0
+            self.wall[phase] = self.wall.get(phase, 0) + time.time() - w0
+
+    def _line(self, phase, hist, simSpan, simStart, extra):
+        line = '%-8s t=%.4f s  step %d  dt=%.2e s' % (phase, O.time, O.iter, O.dt)
+        if simSpan:
+            elapsed = O.time - simStart
+            rate = (hist[-1][1] - hist[0][1]) / max(hist[-1][0] - hist[0][0], 1e-9) if len(hist) > 1 else 0
+            eta = (simSpan - elapsed) / rate if rate > 0 else None
+            line += '  %5.1f%% of %s  ETA %s' % (100 * min(elapsed / simSpan, 1), 'loading' if phase == 'load' else 'phase',
+                                                 fmtTime(eta))
+        if extra:
+            line += '  ' + extra()
+        return line
+
+    def state(self):
+        return {'steps': self.steps, 'wall': self.wall, 'progressSeconds': self.progressSeconds, 'name': self.name}
+
+    @classmethod
+    def fromState(cls, s, ref=None):
+        ph = cls(s['progressSeconds'], s['name'])
+        ph.steps, ph.wall = dict(s['steps']), dict(s['wall'])
+        return ph

@@ -1,0 +1,41 @@
+"""ballast.experiments.phases: a phase ends at its simulated end time or when its test says so, at a
+step fixed by the test's period (never by the machine's speed), with steps counted per phase."""
+import pytest
+
+pytest.importorskip('yade')
+from yade import O, utils  # noqa: E402
+from yade.wrapper import ForceResetter, NewtonIntegrator  # noqa: E402
+
+from ballast.experiments.phases import Phases  # noqa: E402
+
+
+class Live:
+    def __init__(self):
+        self.phases = Phases(progressSeconds=1e9, name='test')
+
+
+def falling():
+    O.reset()
+    O.bodies.append(utils.sphere((0, 0, 0), 0.01))
+    O.engines = [ForceResetter(), NewtonIntegrator(gravity=(0, 0, -10), damping=0)]
+    O.dt = 1e-4
+
+
+def test_phase_ends_at_its_time():
+    falling()
+    exp = Live()
+    exp.phases.run('fall', tEnd=0.25)
+    assert abs(O.time - 0.25) <= 0.5 * O.dt
+    assert exp.phases.steps['fall'] == O.iter == 2500
+
+
+def test_phase_ends_when_done_at_a_checked_step():
+    falling()
+    exp = Live()
+    # v = g (k + 1) dt after step k: |v| > 1 m/s from step 1000; checked every 300 steps, the test is
+    # true at step 1200, whose end is where O.pause() stops
+    exp.phases.run('fall', lambda: -O.bodies[0].state.vel[2] > 1.0, tEnd=10.0, checkEvery=300)
+    assert O.iter == 1201 and exp.phases.steps['fall'] == 1201
+    assert not [e for e in O.engines if e.label == Phases.LABEL]  # the checker is gone
+    exp.phases.run('more', tEnd=O.time + 0.01)
+    assert exp.phases.steps == {'fall': 1201, 'more': 100}
