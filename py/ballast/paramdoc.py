@@ -1,8 +1,8 @@
 """docs/parameters.md, generated from the declarations (``python3 -m ballast.paramdoc > docs/parameters.md``):
-every parameter of the engines, the oedometer and the studies with its unit, allowed range and default,
-and the bounds the oedometer checks between parameters. tests/python/test_paramdoc.py keeps the page in
+every parameter of the engines, of every experiment (ballast.experiments) and of the studies with its unit,
+allowed range and default, and the bounds each experiment checks between its parameters. tests/python/test_paramdoc.py keeps the page in
 step with the code. Needs no YADE."""
-from .oedometer import parameters as oedometer
+from . import experiments
 from .params import ABRASION, CRUSH, PERIODIC
 from .study.options import OPTIONS
 
@@ -19,6 +19,18 @@ def table(params):
     return '\n'.join(rows)
 
 
+def experimentSections():
+    """A section per experiment, found by its folder: its parameters and the bounds it checks between them."""
+    out = []
+    for name in experiments.names():
+        d = experiments.declaration(name)
+        out += ['## %s' % d.title, table(d.params)]
+        if d.bounds:
+            out += ['## Bounds between the %s\'s parameters' % d.title.split(' (')[0].replace('The ', ''),
+                    '\n'.join('* ' + b for b in d.bounds)]
+    return out
+
+
 def page():
     return '\n\n'.join([
         '# Parameters and their bounds',
@@ -33,21 +45,7 @@ def page():
         'Without any period an engine checks every step; periods that are all 0 are refused (the engine '
         'would never check).',
         table(PERIODIC),
-        '## The oedometer (`Oedometer(...)`, `--name value`, table columns)', table(oedometer.PARAMS),
-        '## Bounds between the oedometer\'s parameters',
-        '\n'.join([
-            '* `dMin` < `dMax` < `diameter` / 2, `dMax` < `height`, `rMin` <= `dMax` / 2, `Fmin` < `Fmax`, '
-            '`prepYoung` <= `young`.',
-            '* The run must end: `cycles` / `f` / dt <= %.0e time steps, dt = `dtSafety` x (`dMin` / 2) '
-            'sqrt(`density` / `young`) (YADE\'s PWaveTimeStep of the smallest grain at the start).'
-            % oedometer.MAX_LOADING_STEPS,
-            '* A cycle spans at least %d time steps: 1 / `f` >= %d dt.' % (oedometer.MIN_STEPS_PER_CYCLE,
-                                                                         oedometer.MIN_STEPS_PER_CYCLE),
-            '* `Fmax` carried by one steel contact of the smallest grain overlaps it by at most %g of its '
-            'radius (linear law: u = F / kn, kn = 2 E r Es r / (E r + Es r); Hertz: u = (F / kno)^(2/3), '
-            'kno = 4/3 E* sqrt(r / 2)).' % oedometer.MAX_OVERLAP_RATIO,
-            '* `results` and the packing store (`packingDir`, default `<results>/packings`) are created and '
-            'written to before the preparation.']),
+        *experimentSections(),
         '## Study options (`scripts/study.py`)', table(OPTIONS),
     ]) + '\n'
 

@@ -155,6 +155,15 @@ def anyInt(v):
     return _integer(v)
 
 
+def numberList(each):
+    """A check for a list (or tuple) of numbers, each passing `each`; gives a tuple (frozen)."""
+    def check(v):
+        if isinstance(v, (str, bytes)) or not hasattr(v, '__iter__'):
+            raise ValueError
+        return tuple(each(x) for x in v)
+    return check
+
+
 def boolean(v):
     if not isinstance(v, bool):
         raise ValueError

@@ -6,6 +6,8 @@ class Declaration:
 
     name        the experiment's name (its folder under ballast/experiments/)
     owner       how its errors name it (its Parameters' OWNER, 'Oedometer'); default the name
+    title       its heading in docs/parameters.md ('The oedometer (`Oedometer(...)`, ...)')
+    bounds      [text]: the checks between its parameters, for docs/parameters.md
     params      {name: Param}: the parameters, each declared once (units, ranges, defaults)
     check       check(values, text=False) -> the checked parameters (text=True: cells of a table)
     script      the command line that runs one realization, relative to the repository
@@ -25,9 +27,10 @@ class Declaration:
     """
 
     def __init__(self, name, params, check, script, sets, sampleKey=None, cost=None, recordTimes=None, results=(),
-                 statistics=(), derived=None, response=(), owner=None):
+                 statistics=(), derived=None, response=(), owner=None, title=None, bounds=()):
         self.name, self.params, self.check, self.script, self.sets = name, params, check, script, sets
         self.owner = owner or name
+        self.title, self.bounds = title or name, list(bounds)
         self.sampleKey = sampleKey or (lambda p: None)
         self.cost = cost or (lambda p: 0.0)
         self.recordTimes = recordTimes or (lambda p: ())

@@ -1,0 +1,82 @@
+"""``yade -n -x scripts/single_particle.py [--name value ...]``: one single-particle test, every parameter
+by name (or a yade-batch row), checked before any work. ``scripts/single_particle.py calibrate CSV``:
+ft0, m and the Weibull modulus fitted to measured strengths (plain python3; ``--confirm`` inside yade
+simulates the fitted model at the measured diameters and fits it again)."""
+import argparse
+import sys
+
+from ...params import ParamError
+from ...study.options import StudyError
+from .. import commandline
+from . import calibration
+from .declaration import DECLARATION
+
+PROG = 'yade -n -x scripts/single_particle.py'
+
+
+def runParser():
+    ap = argparse.ArgumentParser(prog=PROG, allow_abbrev=False, description=(
+        'The single-particle crushing test: grains between platens until each first crushes, their '
+        'strengths and Weibull statistics (docs/calibration.md). Every parameter can also be a yade-batch '
+        'table column. To calibrate from measured strengths: scripts/single_particle.py calibrate CSV.'))
+    return commandline.addParameters(ap, DECLARATION.params)
+
+
+def calibrateParser():
+    ap = argparse.ArgumentParser(prog='scripts/single_particle.py calibrate', allow_abbrev=False,
+                                 description=calibration.__doc__.split('\n\n')[0])
+    ap.add_argument('csv', help='measured strengths: a diameter column (diameter [m] or diameter_mm) and a force '
+                                'column (force [N] or force_kN), a row per grain')
+    ap.add_argument('--criterion', default='vonMises', help="the model's criterion (default vonMises)")
+    ap.add_argument('--out', default='calibration', help='where calibration.json and calibration.table go')
+    ap.add_argument('--confirm', action='store_true', help='inside yade: simulate the fitted model at the measured '
+                                                           'diameters and fit it again')
+    return ap
+
+
+def calibrate(argv):
+    a = calibrateParser().parse_args(argv)
+    try:
+        d, force = calibration.readMeasured(a.csv)
+        fit = calibration.calibrate(d, force, a.criterion)
+    except (calibration.CalibrationError, ParamError, ValueError) as e:
+        sys.stderr.write('single_particle.py calibrate: %s\n' % e)
+        return 2
+    files = calibration.write(fit, a.out)
+    print('%d grains, %s: ft0 = %.4g Pa m^m [%.4g, %.4g], m = %.3f [%.3f, %.3f], Weibull modulus %.3f [%.3f, %.3f]' % (
+        fit['n'], fit['criterion'], fit['ft0'], fit['ft0Low'], fit['ft0High'], fit['m'], fit['mLow'], fit['mHigh'],
+        fit['weibullModulus'], fit['weibullModulusLow'], fit['weibullModulusHigh']))
+    print('wrote %s; the oedometer with it: yade -n -x scripts/oedometer.py %s' % (
+        ', '.join(files), calibration.commandLine(fit)))
+    if a.confirm:
+        from .experiment import SingleParticle
+        test = SingleParticle(diameters=list(d), results=a.out, runId='confirm', progress=60,
+                              **calibration.modelParameters(fit))
+        s = test.run()
+        crushed = test.table()
+        crushed = crushed[crushed.crushed]
+        again = calibration.calibrate(crushed.diameter.to_numpy(), crushed.force.to_numpy(), fit['criterion'])
+        print('simulated at the measured diameters (%d of %d crushed): ft0 = %.4g, m = %.3f, Weibull modulus %.3f' % (
+            s['nCrushed'], s['n'], again['ft0'], again['m'], again['weibullModulus']))
+    return 0
+
+
+def main(argv=None):
+    argv = sys.argv[1:] if argv is None else argv
+    if argv[:1] == ['calibrate']:
+        return calibrate(argv[1:])
+    from yade import utils
+    try:
+        params = commandline.readParams(runParser(), argv, DECLARATION)
+        from .experiment import SingleParticle
+        test = SingleParticle(parameters=params)
+        test.checkOutputs()
+    except ParamError as e:
+        sys.stderr.write('single_particle.py: bad parameter %s: %s\n' % (e.name, e))
+        sys.exit(2)
+    except StudyError as e:
+        sys.stderr.write('single_particle.py: bad table: %s\n' % e)
+        sys.exit(2)
+    test.run()
+    utils.waitIfBatch()
+    return 0

@@ -1,0 +1,209 @@
+"""The single-particle crushing test as an experiment on the base (docs/calibration.md): grains drawn
+from the stated sizes, each squeezed between its own pair of steel platens (the bottom one fixed, the
+top one closing at `speed`), until it first crushes under the crushing engine of the oedometer (any
+criterion, strength option and pattern). Per grain: the force on its top platen and the platens'
+displacement at the crush, F/d^2, the criterion's stress and the strength at the crush, and the
+F-displacement curve; then the Weibull statistics (:mod:`.strengths`).
+
+    from ballast.experiments.single_particle import SingleParticle
+    test = SingleParticle(n=50, weibullModulus=3)
+    test.run()                # prepare() and load(); writes strengths.csv, curves.csv, summary.json, figures
+
+The grains stand in a row, a pitch of 1.5 dMax apart: their platens never meet and a grain never
+touches another. Once a grain has crushed its fragments and platens are removed, so the first crush
+is the only one. Gravity is off (a grain's weight is 1e-5 of its crushing force).
+"""
+import math
+import os
+
+import numpy as np
+from yade import O, utils
+from yade.wrapper import (Bo1_Box_Aabb, Bo1_Sphere_Aabb, ForceResetter, Ig2_Box_Sphere_ScGeom,
+                          Ig2_Sphere_Sphere_ScGeom, InsertionSortCollider, InteractionLoop, NewtonIntegrator)
+
+from ... import runtime
+from ...engines import BallastCrushEngine
+from ..base import Experiment
+from ..oedometer.scene import LAWS, materials
+from . import outputs
+from .parameters import SingleParticleParameters
+
+GRAIN_MASK, STEEL_MASK, AVOID = 0b101, 0b110, 0b010  # platens pair with grains only (collider's avoid mask)
+PITCH = 1.5            # [-] grains' centres this many dMax apart
+PLATEN_HALF = 0.6      # [-] half-width of a square platen over the grain's diameter
+PLATEN_THICKNESS = 0.01  # [m]
+CURVE_EVERY = 10       # [steps] between rows of a grain's F-displacement curve
+
+
+@runtime.persistent('SingleParticleTester')
+class Tester:
+    """The grains under test and what each gave. Two callbacks every step: measure() before the crushing
+    engine reads the force on each loaded grain's platens (a replacement changes the force container
+    after it), step() after it notes the crushes (those forces, the displacement, the event's stress and
+    strength), removes the crushed grain's fragments and platens, stops a grain at maxStrain and samples
+    the curves."""
+
+    def __init__(self, speed=0.0, maxStrain=0.0):
+        self.speed, self.maxStrain = speed, maxStrain
+        self.grain, self.d, self.top, self.bottom = [], [], [], []   # body ids and diameters, per grain
+        self.result = []      # per grain None (loading) or {crushed, F, Fbottom, displacement, value, strength, t}
+        self.curves = []      # (grain, t, displacement, F)
+        self.t0, self.seen = None, 0
+        self.forces = {}      # grain -> (F on its top platen, F on its bottom one) [N] this step
+
+    def state(self):
+        return {k: getattr(self, k) for k in ('speed', 'maxStrain', 'grain', 'd', 'top', 'bottom', 'result', 'curves',
+                                              't0', 'seen')}  # forces: measured again at the next step
+
+    @classmethod
+    def fromState(cls, s, ref=None):
+        t = cls()
+        for k, v in s.items():
+            setattr(t, k, [tuple(c) for c in v] if k == 'curves' else v)
+        return t
+
+    def displacement(self):
+        return self.speed * (O.time - self.t0)
+
+    def finished(self):
+        return all(r is not None for r in self.result)
+
+    def _remove(self, k, ids):
+        for i in list(ids) + [self.top[k], self.bottom[k]]:
+            if O.bodies[i] is not None:
+                O.bodies.erase(i)
+
+    def measure(self):
+        self.forces = {k: (O.forces.f(self.top[k])[2], -O.forces.f(self.bottom[k])[2])
+                       for k, r in enumerate(self.result) if r is None}
+
+    def step(self):
+        crush = next(e for e in O.engines if isinstance(e, BallastCrushEngine))
+        u = self.displacement()
+        if crush.nCrushed > self.seen:
+            index = {g: k for k, g in enumerate(self.grain)}
+            for e in crush.events[self.seen:]:
+                k = index.get(e['id'])
+                if k is None or self.result[k] is not None:
+                    continue
+                F, Fb = self.forces[k]
+                self.result[k] = {'crushed': True, 'F': F, 'Fbottom': Fb, 'displacement': u, 'value': e['value'],
+                                  'strength': e['strength'], 't': O.time - self.t0}
+                self._remove(k, e['newIds'])
+            self.seen = crush.nCrushed
+        sample = O.iter % CURVE_EVERY == 0
+        for k, r in enumerate(self.result):
+            if r is not None:
+                continue
+            if u >= self.maxStrain * self.d[k]:  # not crushed: its platens stop, the grain leaves the test
+                F, Fb = self.forces[k]
+                self.result[k] = {'crushed': False, 'F': F, 'Fbottom': Fb, 'displacement': u, 'value': math.nan, 'strength': math.nan, 't': O.time - self.t0}
+                self._remove(k, [self.grain[k]])
+            elif sample:
+                self.curves.append((k, O.time - self.t0, u, self.forces[k][0]))
+
+
+@runtime.persistent('SingleParticle')
+class SingleParticle(Experiment):
+    """The single-particle crushing test; keyword arguments: any parameter of
+    :data:`ballast.experiments.single_particle.parameters.PARAMS`, or parameters=check(...)."""
+
+    NAME = 'single_particle'
+    Parameters = SingleParticleParameters
+    REOPEN_PARAMS = ('results', 'runId', 'progress')
+
+    def __init__(self, parameters=None, **params):
+        self.tester = None
+        Experiment.__init__(self, parameters, **params)
+
+    def pieces(self):
+        return Experiment.pieces(self) + [self.tester]
+
+    def diameters(self):
+        """The grains' diameters [m]: as given, or n uniform in [dMin, dMax] drawn from the seed."""
+        p = self.p
+        if p['diameters']:
+            return np.array(p['diameters'], dtype=float)
+        return np.random.default_rng(p['seed']).uniform(p['dMin'], p['dMax'], p['n'])
+
+    def prepare(self):
+        """The grains in a row, each touching its two platens, the engines, the time step (eq. 5)."""
+        p = self.p
+        if self.out is None:
+            self.checkOutputs()
+            self.dir.create()
+            self.say('run %s -> %s' % (self.runId, self.out))
+        self.newScene()
+        ballast, steel = materials(p, p['young'])
+        ip2, law2, _ = LAWS[p['law']]
+        O.engines = [ForceResetter(),
+                     InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Box_Aabb()], avoidSelfInteractionMask=AVOID),
+                     InteractionLoop([Ig2_Sphere_Sphere_ScGeom(), Ig2_Box_Sphere_ScGeom()], [ip2()], [law2()]),
+                     NewtonIntegrator(damping=p['damping'], gravity=(0, 0, 0))]
+        d = self.diameters()
+        self.tester = tester = Tester(p['speed'], p['maxStrain'])
+        pitch = PITCH * max(d.max(), p['dMax'])
+        for k, dk in enumerate(d):
+            x, a, t = k * pitch, PLATEN_HALF * dk, PLATEN_THICKNESS / 2
+            tester.grain.append(O.bodies.append(utils.sphere((x, 0, dk / 2), dk / 2, material=ballast, mask=GRAIN_MASK)))
+            tester.bottom.append(O.bodies.append(utils.box((x, 0, -t), (a, a, t), fixed=True, material=steel,
+                                                           mask=STEEL_MASK)))
+            tester.top.append(O.bodies.append(utils.box((x, 0, dk + t), (a, a, t), fixed=True, material=steel,
+                                                        mask=STEEL_MASK)))
+        tester.d, tester.result = [float(x) for x in d], [None] * len(d)
+        O.engines = O.engines + [
+            runtime.callback(tester, 'measure', iterPeriod=1, label='singleParticleForces'),
+            BallastCrushEngine(ft0=p['ft0'], m=p['m'], pattern=p['pattern'], criterion=p['criterion'],
+                               weibullModulus=p['weibullModulus'], seed=p['seed'], rMin=p['rMin'], adjustDt=False,
+                               label='crush', **p.crushPeriod()),
+            runtime.callback(tester, 'step', iterPeriod=1, label='singleParticleTester')]
+        O.dt = p['dtSafety'] * utils.PWaveTimeStep()
+        self.adopt()
+        self.say('prepared %d grains of %.1f-%.1f mm, platens closing at %g m/s, dt = %.3g s' % (
+            len(d), 1e3 * d.min(), 1e3 * d.max(), p['speed'], O.dt))
+        return self
+
+    def load(self):
+        """Close every pair of platens until its grain crushes (or closes by maxStrain); write the outputs."""
+        p, tester = self.p, self.tester
+        if tester is None:
+            self.prepare()
+            tester = self.tester
+        if tester.t0 is None:
+            tester.t0 = O.time
+            for i in tester.top:
+                O.bodies[i].state.vel = (0, 0, -p['speed'])
+        tEnd = tester.t0 + p['maxStrain'] * max(tester.d) / p['speed'] + 2 * O.dt
+        self.runUntil(tester.finished, tEnd=tEnd, phase='crush', checkEvery=50, simSpan=tEnd - O.time,
+                      simStart=O.time, extra=lambda: '%d of %d grains done' % (
+                          sum(r is not None for r in tester.result), len(tester.result)))
+        self.save(os.path.join(self.out, 'state-end.yade.gz'))
+        s = self.summary()
+        outputs.write(self, s)
+        spread = ('F/d^2 %.3g-%.3g MPa' % (s['forceOverD2Min'] / 1e6, s['forceOverD2Max'] / 1e6) if s['nCrushed']
+                  else 'none crushed by maxStrain')
+        self.say('done: %d of %d grains crushed, %s; results in %s' % (s['nCrushed'], s['n'], spread, self.out))
+        return s
+
+    def run(self):
+        self.prepare()
+        return self.load()
+
+    def summary(self):
+        """What summary.json holds (outputs.summary: the statistics of the strengths)."""
+        return outputs.summary(self)
+
+    def table(self):
+        """strengths.csv as a pandas DataFrame (outputs.table)."""
+        return outputs.table(self)
+
+    # ------------------------------------------------------------------ saving
+    def state(self):
+        return dict(self.baseState(), tester=runtime.ref(self.tester))
+
+    @classmethod
+    def fromState(cls, s, ref):
+        exp = cls.__new__(cls)
+        exp.setBaseState(s, ref)
+        exp.tester = ref(s['tester'])
+        return exp

@@ -1,0 +1,73 @@
+"""Parameters of the single-particle crushing test, declared once (the library, the command line and
+study tables use these names). The materials, the contact law and the crushing model are the
+oedometer's declarations (the same grains, the same steel); the test's own are the sample of grains,
+the platens' speed and when a grain counts as not crushed. Needs no YADE."""
+import math
+
+from ...params import CRUSH, INT32_MAX, Param, Parameters, between, intBetween, numberList, positive
+from ..oedometer.parameters import PARAMS as OEDOMETER
+from .closedform import crushingForce
+
+OWNER = 'SingleParticle'
+
+PARAMS = dict({
+    'seed': Param(1, '-', 'the sample: grain sizes, Weibull strengths, fragment orientations', intBetween(0, INT32_MAX),
+                  'an integer in [0, 2^31 - 1]'),
+    'n': Param(30, '-', 'grains crushed, each between its own pair of platens', intBetween(1, 10000),
+               'an integer in [1, 10000]'),
+    'diameters': Param((), 'm', 'the grains\' diameters (then n is their number); empty: n diameters uniform in '
+                       '[dMin, dMax]', numberList(positive), 'a list of numbers > 0, e.g. [0.025, 0.04]'),
+    'classes': Param(3, '-', 'size classes of equal width in [dMin, dMax] that the Weibull statistics are given '
+                     'for (1: one class)', intBetween(1, 50), 'an integer in [1, 50]'),
+    'speed': Param(0.01, 'm/s', 'closing speed of each pair of platens (the top one moves, the bottom one is fixed); '
+                   'quasi-static when the grain\'s inertia is a small share of the load (inertiaRatioMax in '
+                   'summary.json)', positive, 'a number > 0'),
+    'maxStrain': Param(0.01, '-', 'a grain not crushed when its platens have closed by this fraction of its diameter '
+                       'is reported as not crushed', between(1e-4, 0.5), 'a number in [1e-4, 0.5)'),
+    'Tc': Param(0.0, 's', 'crushing period T_c: the criterion is checked every Tc (0 = every step, the default '
+                'here: the force at the crush is then resolved to one step)', OEDOMETER['Tc'].check,
+                OEDOMETER['Tc'].allowed),
+    'ft0': OEDOMETER['ft0'],
+    'rMin': CRUSH['rMin'].withDefault(0.0, 'grains smaller than rMin never crush (0: every grain of the test can)'),
+}, **{k: OEDOMETER[k] for k in ('dMin', 'dMax', 'young', 'poisson', 'friction', 'density', 'steelYoungRatio',
+                                'steelPoisson', 'steelFriction', 'steelDensity', 'law', 'damping', 'dtSafety', 'm',
+                                'pattern', 'criterion', 'weibullModulus', 'results', 'runId', 'progress')})
+
+
+class SingleParticleParameters(Parameters):
+    """The test's checked parameters (frozen) and what follows from them."""
+
+    OWNER, PARAMS = OWNER, PARAMS
+
+    def grainCount(self):
+        return len(self['diameters']) or self['n']
+
+    def crushPeriod(self):
+        """The crushing engine's YADE period: {'virtPeriod': Tc}, or {'iterPeriod': 1} for Tc = 0."""
+        return {'virtPeriod': self['Tc']} if self['Tc'] > 0 else {'iterPeriod': 1}
+
+    def expectedForce(self, d):
+        """The closed-form force [N] that crushes a grain of diameter d [m] of characteristic strength
+        (closedform.crushingForce)."""
+        return crushingForce(self['criterion'], d / 2, self['ft0'], self['m'])
+
+    def crossCheck(self):
+        p, bad = self, self.bad
+        if p['dMin'] >= p['dMax']:
+            bad('dMin', 'must be smaller than dMax = %g' % p['dMax'])
+        if p['diameters'] and p['n'] != PARAMS['n'].default and p['n'] != len(p['diameters']):
+            bad('n', 'given with %d diameters: give one or the other' % len(p['diameters']))
+        # the platens of one grain close by maxStrain d at speed: at least 100 steps (a loading, not a blow)
+        dMin = min(p['diameters']) if p['diameters'] else p['dMin']
+        dt = p['dtSafety'] * dMin / 2 * math.sqrt(p['density'] / p['young'])
+        steps = p['maxStrain'] * dMin / p['speed'] / dt
+        if steps < 100:
+            bad('speed', 'closes the smallest grain by maxStrain in %.3g time steps of %.3g s, fewer than 100: not '
+                         'a quasi-static test' % (steps, dt))
+        if steps > 1e8:
+            bad('speed', 'takes %.3g time steps to close the smallest grain by maxStrain, more than 1e8' % steps)
+
+
+def check(values, text=False):
+    """All parameters checked, as :class:`SingleParticleParameters`."""
+    return SingleParticleParameters.check(values, text)

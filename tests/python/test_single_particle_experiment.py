@@ -1,0 +1,81 @@
+"""ballast.experiments.single_particle: the test in YADE. A deterministic grain crushes at the closed-form
+force of its criterion (three sizes, each criterion) quasi-statically; Weibull strengths of moduli 3 and
+10 over 120 grains give back the modulus and the size law in their 95 % intervals; a grain that cannot
+crush is reported so; the outputs and the command line."""
+import json
+import os
+import shutil
+import subprocess
+
+import pandas as pd
+import pytest
+
+pytest.importorskip('yade')
+from ballast.experiments.single_particle import SingleParticle  # noqa: E402
+from ballast.experiments.single_particle.closedform import crushingForce  # noqa: E402
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+SIZES = [0.022, 0.032, 0.044]   # [m] three grains
+TOL_FORCE = 5e-3   # [-] measured against closed-form force: one step's rise (3e-4), the contact point r - u/2
+#                    instead of r (overlap / 2r ~ 4e-4) and the grain's inertia (below 2e-3 at 0.002 m/s)
+TOL_INERTIA = 1e-2  # [-] |F_top - F_bottom| / F at the crush: quasi-static
+
+
+@pytest.mark.parametrize('criterion', ['vonMises', 'maxContactForce', 'majorPrincipal'])
+def test_deterministic_grains_crush_at_the_closed_form_force(tmp_path, criterion):
+    test = SingleParticle(diameters=SIZES, criterion=criterion, m=0.5, speed=0.002, results=str(tmp_path), progress=60)
+    s = test.run()
+    t = test.table()
+    assert t.crushed.all() and s['nCrushed'] == 3
+    for d, F in zip(t.diameter, t.force):
+        assert F == pytest.approx(crushingForce(criterion, d / 2, 3.1e6, 0.5), rel=TOL_FORCE)
+    assert s['closedFormErrorMax'] < TOL_FORCE and s['inertiaRatioMax'] < TOL_INERTIA
+    # the criterion's stress at the crush is the strength f_t = ft0 / r^m to one step
+    assert (t.criterionStress / t.strength - 1).abs().max() < 1e-3
+    assert ((t.strength - 3.1e6 / (t.diameter / 2) ** 0.5).abs() / t.strength).max() < 1e-12
+
+
+@pytest.mark.parametrize('k', [3.0, 10.0])
+def test_weibull_strengths_give_back_the_modulus_and_the_size_law(tmp_path, k):
+    test = SingleParticle(n=120, weibullModulus=k, seed=5, results=str(tmp_path), progress=60)
+    s = test.run()
+    assert s['nCrushed'] == 120
+    law = s['sizeLawCriterion']   # the criterion's stress at the crush: ft0 r^-m w
+    assert law['kLow'] < k < law['kHigh'] and law['bLow'] < 1.0 < law['bHigh'] and law['s0Low'] < 3.1e6 < law['s0High']
+    assert s['sizeLawForceOverD2']['bLow'] < 1.0 < s['sizeLawForceOverD2']['bHigh']   # F/d^2 ~ r^-m too
+    for name in ('strengths.csv', 'curves.csv', 'summary.json', 'weibull.png', 'size.png', 'state-end.yade.gz'):
+        assert os.path.isfile(os.path.join(test.out, name)), name
+    table = pd.read_csv(os.path.join(test.out, 'strengths.csv'))
+    assert len(table) == 120   # written to 9 digits
+    assert ((table.forceOverD2 / (table.force / table.diameter ** 2) - 1).abs() < 1e-8).all()
+    assert s['cpuSecondsPerGrain'] > 0
+
+
+def test_a_grain_that_cannot_crush_is_reported_at_max_strain(tmp_path):
+    test = SingleParticle(diameters=[0.03, 0.04], ft0=1e12, maxStrain=0.002, results=str(tmp_path), progress=60)
+    s = test.run()
+    t = test.table()
+    assert s['nCrushed'] == 0 and s['nNotCrushed'] == 2 and not t.crushed.any()
+    assert (t.displacement >= 0.002 * t.diameter).all()
+
+
+def test_reopened_read_only_the_test_gives_its_table_back(tmp_path):
+    test = SingleParticle(diameters=SIZES, results=str(tmp_path), progress=60)
+    test.run()
+    again = SingleParticle.reopen(os.path.join(test.out, 'state-end.yade.gz'), readOnly=True)
+    assert again.out is None
+    pd.testing.assert_frame_equal(again.table(), test.table())
+
+
+@pytest.mark.skipif(shutil.which('yade') is None, reason='needs yade')
+def test_command_line_runs_and_refuses_a_bad_value(tmp_path):
+    script = os.path.join(ROOT, 'scripts', 'single_particle.py')
+    env = dict(os.environ, OMP_NUM_THREADS='1')
+    ok = subprocess.run(['yade', '-n', '-x', script, '--n', '4', '--results', str(tmp_path), '--runId', 'cli'],
+                        capture_output=True, text=True, timeout=300, env=env, cwd=str(tmp_path))
+    assert ok.returncode == 0, ok.stdout[-2000:] + ok.stderr[-2000:]
+    with open(tmp_path / 'cli' / 'summary.json') as fh:
+        assert json.load(fh)['n'] == 4
+    bad = subprocess.run(['yade', '-n', '-x', script, '--speed', '-1', '--results', str(tmp_path)],
+                         capture_output=True, text=True, timeout=300, env=env, cwd=str(tmp_path))
+    assert bad.returncode == 2 and 'bad parameter speed: SingleParticle: speed = ' in bad.stderr
