@@ -79,3 +79,25 @@ def test_command_line_runs_and_refuses_a_bad_value(tmp_path):
     bad = subprocess.run(['yade', '-n', '-x', script, '--speed', '-1', '--results', str(tmp_path)],
                          capture_output=True, text=True, timeout=300, env=env, cwd=str(tmp_path))
     assert bad.returncode == 2 and 'bad parameter speed: SingleParticle: speed = ' in bad.stderr
+
+
+def test_grains_side_by_side_never_touch_one_another(tmp_path):
+    """Every interaction of the scene, at every step until the crushes, is between a grain and its own
+    platens: pitch 1.5 dMax against platens 1.2 d wide."""
+    from yade import O
+    test = SingleParticle(n=12, weibullModulus=3, results=str(tmp_path), progress=60)
+    test.prepare()
+    t = test.tester
+    own = {g: {top, bottom} for g, top, bottom in zip(t.grain, t.top, t.bottom)}
+    seen = []
+
+    def watch():
+        pairs = [(i.id1, i.id2) for i in O.interactions if i.isReal]
+        seen.append(len(pairs))
+        for a, b in pairs:
+            g, other = (a, b) if a in own else (b, a)
+            assert g in own and other in own[g], (a, b)
+    step = t.step
+    t.step = lambda: (watch(), step())
+    test.load()
+    assert max(seen) == 2 * 12 and test.summary()['nCrushed'] == 12   # both platens of every grain, at first
