@@ -42,7 +42,7 @@ double sphereContactBound(double maxOverlapRatio, double EstarMax);
 // Contacts of each grain with bodies no smaller than rPartner (0: walls and facets, R = r), from the
 // grain's fabric stress alone (no contact data):
 //   eq. 3 traced, shear being normal to the branch l = r - u_N/2:  sum_c F_N,c l_c = |tr sigma| V,
-//   l_c >= r/2 (u_N <= r)                                        =>  F_N,c <= 2 |tr sigma| V / r,
+//   l_c >= r/2 (facet, box: l = r - u_N/2, u_N <= r; Wall: l = r - u_N, u_N <= r/2)  =>  F_N,c <= 2 |tr sigma| V / r,
 //   then eq. 7 with the Hertz law (hertzPressureFromForce), R >= r rPartner / (r + rPartner), E* <= EstarMax.
 // n grains: traces tr(sigma) [Pa], radii r [m] (V = 4/3 pi r^3, see sphereVolume). Writes bound [Pa], which may be
 // infinite for an EstarMax or a force beyond the range of doubles (the binding refuses it).

@@ -26,14 +26,14 @@ class GrainTable:
     def __init__(self):
         ids, radii, masks = [], [], []
         self.radiusById = np.zeros(len(O.bodies))
-        self.sphereMaterials, self.otherMaterials = set(), set()
+        self.sphereMaterials, self.otherMaterials = {}, {}   # the bodies' own material objects (see _material)
         for b in O.bodies:
             if b is None:
                 continue
             if not isinstance(b.shape, Sphere):
-                self.otherMaterials.add(b.material.id)
+                _material(self.otherMaterials, b.material)
                 continue
-            self.sphereMaterials.add(b.material.id)
+            _material(self.sphereMaterials, b.material)
             self.radiusById[b.id] = b.shape.radius
             if b.dynamic and not b.isClumpMember:
                 ids.append(b.id)
@@ -68,7 +68,8 @@ class GrainTable:
             self.radiusById = np.concatenate([self.radiusById, np.zeros(grow)])
         self.radiusById[oldId] = 0.0
         self.radiusById[np.asarray(newIds, dtype=np.int64)] = newRadii
-        self.sphereMaterials.update(O.bodies[int(i)].material.id for i in newIds)
+        for i in newIds:
+            _material(self.sphereMaterials, O.bodies[int(i)].material)
 
     def resized(self, bid, radius):
         self.radii[self.ids == bid] = radius
@@ -78,6 +79,12 @@ class GrainTable:
         """Call after the engine's own changes: the table is current again, the step's caches not."""
         invalidate()
         self._sign()
+
+
+def _material(known, m):
+    """Keep the material object m of a body: by its id in O.materials, or, for a material never appended there
+    (id -1, which O.materials[-1] would misread as the last one), by its moduli."""
+    known.setdefault(m.id if m.id >= 0 else ('unlisted', m.young, m.poisson), m)
 
 
 _table = None
@@ -146,9 +153,9 @@ def contacts():
 
 
 def contactsOf(ids):
-    """As :func:`contacts`, for the real interactions of the bodies ids only (each contact once). Fn is
-    read as |normalForce|: only for contact laws that never pull (see :func:`contactLaw`)."""
-    rows = [(i.id1, i.id2, i.phys.normalForce.norm(), i.geom.penetrationDepth)
+    """As :func:`contacts`, for the real interactions of the bodies ids only (each contact once), read the same
+    way, so that eq. 7 gives the same bits as after a full read."""
+    rows = [(i.id1, i.id2, i.phys.normalForce.dot(i.geom.normal), i.geom.penetrationDepth)
             for b in ids.tolist() for i in O.interactions.withBody(b)]
     id1, id2, Fn, uN = _arrays(rows)
     _, first = np.unique(id1 * (len(O.bodies) + 1) + id2, return_index=True)  # a contact of two candidates comes twice
@@ -199,8 +206,8 @@ def contactLaw():
 def moduli(table):
     """Largest Hertz contact modulus E* [Pa] between sphere materials, and between a sphere material
     and the material of a non-sphere body (walls, facets); 0 where there is no such pair."""
-    def props(ids):
-        m = [O.materials[i] for i in sorted(ids)]
+    def props(materials):
+        m = list(materials.values())
         return (np.array([x.young for x in m], dtype=float), np.array([x.poisson for x in m], dtype=float))
 
     def largest(a, b):
@@ -219,8 +226,8 @@ def linearBound(table):
     (E1 r1 + E2 r2), so between spheres (R = r1 r2 / (r1 + r2)) p0 = 3 E1 E2 (r1 + r2) / (pi (E1 r1 +
     E2 r2)) <= 3 max(E1, E2) / pi, and with a wall or facet (YADE takes the sphere's radius for both
     sides; eq. 7 takes R = r) p0 = 3 E1 E2 / (pi (E1 + E2)). 0 where there is no such pair."""
-    Es = [O.materials[i].young for i in table.sphereMaterials]
-    Eo = [O.materials[i].young for i in table.otherMaterials]
+    Es = [m.young for m in table.sphereMaterials.values()]
+    Eo = [m.young for m in table.otherMaterials.values()]
     ss = 3 * max(Es) / np.pi if Es else 0.0
     sw = max((3 * a * b / (np.pi * (a + b)) for a in Es for b in Eo), default=0.0)
     return max(ss, sw)

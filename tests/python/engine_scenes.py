@@ -25,21 +25,23 @@ def add(engine):
     return engine
 
 
-def packedBox(n=4, r=0.01, E=1e8, engines=None):
-    """n^3 grains settled under gravity in a box of walls (Hertz-Mindlin contacts unless engines are
-    given); returns the box height [m]."""
+def packedBox(n=4, r=0.01, E=1e8, engines=None, spread=(0.8, 0.95), seed=5, wallE=10.0, listed=True):
+    """n^3 grains of radii r * U(spread) settled under gravity in a box of walls wallE times stiffer
+    (Hertz-Mindlin contacts unless engines are given); listed=False leaves the grains' material out of
+    O.materials (YADE allows it: its id stays -1). Returns the box height [m]."""
     O.reset()
-    steel, mat = steelMaterial(E=10 * E), ballastMaterial(E=E)
+    steel, mat = steelMaterial(E=wallE * E), ballastMaterial(E=E)
     O.materials.append(steel)
-    O.materials.append(mat)
+    if listed:
+        O.materials.append(mat)
     L = 2 * r * n
     for axis, pos, sense in ((0, 0, 1), (0, L, -1), (1, 0, 1), (1, L, -1), (2, 0, 1)):
         O.bodies.append(utils.wall(pos, axis=axis, sense=sense, material=steel))
-    rng = np.random.default_rng(5)
+    rng = np.random.default_rng(seed)
     for i in range(n):
         for j in range(n):
             for k in range(n):
-                rr = r * (0.8 + 0.15 * rng.random())
+                rr = r * (spread[0] + (spread[1] - spread[0]) * rng.random())
                 O.bodies.append(utils.sphere(((2 * i + 1) * r, (2 * j + 1) * r, (2 * k + 1) * r), rr, material=mat))
     O.engines = engines or hertzEngines(gravity=(0, 0, -9.81), damping=0.4)
     O.dt = 0.3 * utils.PWaveTimeStep()

@@ -194,3 +194,51 @@ def test_prefilter_switches_itself_off_when_a_full_read_breaks_the_bound():
         i.phys.kno *= 1e3
     O.run(1, True)
     assertPrefilterOffWithSameAbrasion('bound broken')
+
+
+# Seven abrasion-heavy packings (issue 28, item 5): (law, strength quantile of p0 (linear: a factor of
+# eq. 7's constant 3 E / pi), gamma, rMin [m], radius spread, checks every N steps, grains' material listed
+# in O.materials). The last one broke the bound before: the moduli were looked up as O.materials[id], and a
+# material never appended there has id -1, so the last listed material (the walls', 10 times softer here)
+# stood in for the grains'.
+HEAVY = {
+    'hertz-q25-g90': ('hertz', 0.25, 0.9, 0.0, (0.8, 0.95), 10, True),
+    'hertz-q05-g90-wide': ('hertz', 0.05, 0.9, 0.0, (0.5, 1.0), 10, True),
+    'hertz-q10-g85-rMin': ('hertz', 0.10, 0.85, 0.004, (0.8, 0.95), 10, True),
+    'hertz-q02-g92-every-step': ('hertz', 0.02, 0.92, 0.002, (0.6, 1.0), 1, True),
+    'linear-g90': ('linear', 0.999, 0.9, 0.0, (0.8, 0.95), 10, True),
+    'linear-g70-wide-rMin': ('linear', 0.999, 0.7, 0.005, (0.4, 1.0), 10, True),
+    'hertz-q25-g90-unlisted': ('hertz', 0.25, 0.9, 0.0, (0.8, 0.95), 10, False),
+}
+
+
+def heavyRun(name, **engine):
+    """A packing of HEAVY[name] pressed by 200 g, then 3 000 steps of abrasion: the engine."""
+    law, q, gamma, rMin, spread, period, listed = HEAVY[name]
+    linear = law == 'linear'
+    packedBox(spread=spread, seed=len(name), listed=listed, wallE=0.1 if not listed else 10.0,
+              **(dict(E=LINEAR_E, engines=linearEngines()) if linear else {}))
+    [e for e in O.engines if type(e).__name__ == 'NewtonIntegrator'][0].gravity = (0, 0, -200 * 9.81)
+    O.run(2000, True)
+    _, p0 = fullPressures()
+    strength = q * 3 * LINEAR_E / math.pi if linear else float(np.quantile(p0[p0 > 0], q))
+    ab = add(BallastAbrasionEngine(strength=strength, gamma=gamma, rMin=rMin, iterPeriod=period, **engine))
+    O.run(3000, True)
+    return ab
+
+
+@pytest.mark.parametrize('name', list(HEAVY))
+def test_prefilter_stays_on_with_the_decisions_of_a_full_read_in_abrasion_heavy_packings(name):
+    """Each packing abrades its grains again and again. Verified at every check the bound holds (the
+    prefilter stays on); reading only the candidates' contacts (maxCandidates=1) gives the events of a full
+    read bit for bit: the same steps, grains, radii and p0."""
+    verified = heavyRun(name, verifyPeriod=1)
+    assert verified.nAbraded > 64  # more abrasions than grains
+    assert verified.prefilterActive and verified.prefilterNote == '', verified.prefilterNote
+    assert verified.nVerified > 0.5 * verified.nChecks
+    full = heavyRun(name, prefilter=False)
+    fast = heavyRun(name, maxCandidates=1.0)
+    assert fast.prefilterActive and fast.prefilterNote == ''
+    key = ('iter', 'id', 'radius', 'value', 'strength')
+    assert [tuple(e[k] for k in key) for e in fast.events] == [tuple(e[k] for k in key) for e in full.events]
+    assert fast.nAbraded == full.nAbraded == verified.nAbraded

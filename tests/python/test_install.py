@@ -33,6 +33,15 @@ def test_import_in_yade_from_any_directory(tmp_path):
     assert line.split()[1] == '2.0' and '/usr/local/lib/python3' in line
 
 
+def test_the_outputs_readers_are_installed(tmp_path):
+    """The set-up installs what the outputs are meant for: pandas (the CSV files) and VTK (the .vtu frames)."""
+    for p in ('python3-pandas', 'python3-vtk9'):
+        assert p in open(os.path.join(ROOT, 'setup.sh')).read().split('PACKAGES=(')[1].split(')')[0].split()
+    r = run(['/usr/bin/python3', '-c', 'import pandas, vtk; print(pandas.__version__, vtk.vtkVersion.GetVTKVersion())'],
+            tmp_path)
+    assert r.returncode == 0, r.stderr
+
+
 @pytest.mark.skipif(os.geteuid() != 0, reason='set-up installs as root')
 def test_second_setup_installs_and_rebuilds_nothing(tmp_path):
     r = run(['bash', os.path.join(ROOT, 'setup.sh')], tmp_path, timeout=600)
