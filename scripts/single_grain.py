@@ -28,8 +28,8 @@ for chunk in range(200):
 if not crush.nCrushed:
     raise SystemExit('the grain did not crush: check ft0')
 e = crush.events[0]
-print('crushed at t = %.4e s (iteration %d): sigma_e = %.4g Pa > f_t = %.4g Pa' % (e['t'], e['iter'], e['value'],
-                                                                                e['strength']))
+print('crushed at t = %.4e s (iteration %d): sigma_e = %.9g Pa > f_t = %.9g Pa (sigma_e/f_t = 1 + %.2g)' % (
+    e['t'], e['iter'], e['value'], e['strength'], e['value'] / e['strength'] - 1))
 print('%d fragments %s, volume lost %.3g m^3 (%.1f %% of the grain), mass lost %.3g kg'
       % (len(e['newIds']), e['newIds'], crush.volumeLost, 100 * crush.volumeLost / (4 / 3 * math.pi * r ** 3),
          crush.massLost))

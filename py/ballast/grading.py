@@ -88,16 +88,19 @@ def bbi(before, after, sieves=SIEVES_MM, finest=BBI_FINEST_MM, top=None):
     grading after. The reference draws that boundary by hand ("arbitrary"); ours is the straight line
     from 0 % passing at `finest` [mm] to 100 % at `top` [mm] (default: the top size of the grading
     before), both curves linear in log10(size) between the sieves, areas over [finest, top]. 0 without
-    breakage, 1 when the grading after lies on the boundary (above it, BBI > 1)."""
+    breakage, 1 when the grading after lies on the boundary. Both gradings are taken at most up to the
+    boundary: what passes above it is dust finer than the boundary allows (the lost volume counted as
+    fines, below 0.075 mm), maximum breakage already, so BBI stays in [0, 1]; summary.json reports that
+    dust apart (dustPercent)."""
     top = topSize(before, sieves) if top is None else float(top)
     if not 0 < finest < top:
         raise ValueError('bbi: the boundary needs 0 < finest < top, got finest = %r mm, top = %r mm' % (finest, top))
     xs = np.log10(np.asarray(sieves, dtype=float))
     x0, x1 = np.log10(finest), np.log10(top)
     x = np.concatenate([[x0], xs[(xs > x0) & (xs < x1)], [x1]])
-    b = np.interp(x, xs, np.asarray(before, dtype=float))
-    a = np.interp(x, xs, np.asarray(after, dtype=float))
     boundary = 100.0 * (x - x0) / (x1 - x0)
+    b = np.minimum(np.interp(x, xs, np.asarray(before, dtype=float)), boundary)
+    a = np.maximum(np.minimum(np.interp(x, xs, np.asarray(after, dtype=float)), boundary), b)
     A = float(np.trapz(a - b, x))
     AB = float(np.trapz(boundary - b, x))  # A + B
     return A / AB if AB > 0 else 0.0

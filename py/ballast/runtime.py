@@ -22,6 +22,7 @@ A state saved by an older version (before this document, several ``ballast.*`` k
 import builtins
 import json
 import re
+import sys
 import uuid
 
 from yade import O
@@ -133,8 +134,14 @@ def get(oid):
 
 
 def fire(oid, method):
-    """What every command of the package calls."""
-    getattr(get(oid), method)()
+    """What every command of the package calls. YADE turns an error inside a PyRunner into 'PyRunner error.':
+    the cause is printed first, in one line."""
+    try:
+        obj = get(oid)
+    except Exception as e:
+        sys.stderr.write('%s: %s\n' % (type(e).__name__, e))
+        raise
+    getattr(obj, method)()
 
 
 def document():
@@ -164,6 +171,24 @@ def checkFormat():
                                % (', '.join(old[:3]) + (', ...' if len(old) > 3 else ''), FORMAT))
 
 
+def _readDocument(text):
+    """The saved document, checked for its shape; StateFormatError in one line if it is damaged."""
+    def bad(why):
+        raise StateFormatError('ballast: O.tags[%r] of this scene is damaged: %s' % (TAG, why))
+    if not text.strip():
+        bad('it is blank')
+    try:
+        doc = json.loads(text)
+    except ValueError as e:
+        bad('not a JSON document (%s)' % e)
+    if not isinstance(doc, dict) or not isinstance(doc.get('objects'), dict) or not isinstance(doc.get('token'), str):
+        bad('expected a JSON object with "format", "token" and "objects", got %.60s' % text.strip())
+    for oid, entry in doc['objects'].items():
+        if not isinstance(entry, dict) or not isinstance(entry.get('type'), str) or 'state' not in entry:
+            bad('object %r is not {"type": ..., "state": ...}' % oid)
+    return doc
+
+
 def restore():
     """Rebuild the objects saved in the current scene (if it is not live) and put them back in O.engines.
     Returns {id: object}."""
@@ -173,13 +198,13 @@ def restore():
     checkFormat()
     if TAG not in O.tags.keys():
         return {}
-    doc = json.loads(O.tags[TAG])
+    doc = _readDocument(O.tags[TAG])
     if doc.get('format') != FORMAT:
         raise StateFormatError('ballast: this state has format %r; this version reads format %d' % (doc.get('format'),
                                                                                                   FORMAT))
+    saved = doc['objects']
     s = _newScene()
     s.token = doc['token']
-    saved = doc['objects']
     pending = {}
 
     def build(oid):
@@ -193,7 +218,11 @@ def restore():
             raise StateFormatError('ballast: this state holds an object of type %r, unknown to this version'
                                    % entry['type'])
         pending[oid] = True
-        obj = cls.fromState(entry['state'], _Resolver(build))
+        try:
+            obj = cls.fromState(entry['state'], _Resolver(build))
+        except (KeyError, TypeError, ValueError, AttributeError, IndexError) as e:
+            raise StateFormatError('ballast: O.tags[%r] is damaged: the saved %s %s cannot be rebuilt (%s: %s)'
+                                   % (TAG, entry['type'], oid, type(e).__name__, e)) from None
         del pending[oid]
         for other in [k for k, o in s.objects.items() if o is obj]:  # an id its constructor registered
             del s.objects[other]

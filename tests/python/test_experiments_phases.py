@@ -39,3 +39,22 @@ def test_phase_ends_when_done_at_a_checked_step():
     assert not [e for e in O.engines if e.label == Phases.LABEL]  # the checker is gone
     exp.phases.run('more', tEnd=O.time + 0.01)
     assert exp.phases.steps == {'fall': 1201, 'more': 100}
+
+
+def test_a_state_saved_mid_phase_counts_its_steps_so_far():
+    """The audit: a run resumed from a state saved mid-loading counted only the steps after the resume."""
+    falling()
+    exp = Live()
+    seen = []
+    exp.phases.run('fall', tEnd=0.05, afterChunk=lambda: seen.append((O.iter, exp.phases.state()['steps']['fall'])))
+    assert seen and all(steps == it for it, steps in seen)
+    resumed = Phases.fromState(dict(exp.phases.state(), steps={'fall': 300}))  # as if saved at step 300
+    resumed.run('fall', tEnd=O.time + 0.01)
+    assert resumed.steps['fall'] == 300 + 100
+
+
+def test_the_time_left_uses_the_whole_phase_rate():
+    """The ETA swung from 5 s to 11 min (a 30 s window); it is the phase's simulated time over its wall time."""
+    falling()
+    line = Live().phases._line('load', 0.01, simSpan=1.0, simStart=0.0, extra=None)  # 0.01 s simulated per second
+    assert 'ETA 1m40s' in line, line

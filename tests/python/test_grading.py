@@ -109,3 +109,12 @@ def test_everything_passing_is_exactly_100_percent():
     assert P[-1] == 100.0 and P[-2] < 100.0    # 100 mm passes every grain (30 mm at most), 10 mm not
     before = [0, 0, 0, 100 - 1e-14]
     assert grading.hardin(before, [0, 0, 50, 100], SIEVES) > 0 and grading.bbi(before, [0, 0, 50, 100], SIEVES) > 0
+
+
+def test_bbi_stays_within_its_definition_with_dust_above_the_boundary():
+    """The audit: BBI 1.061 and 1.193, the lost volume counted as dust passing below the boundary's 0.075 mm.
+    Above the boundary the grading is maximum breakage already: BBI = 1, never more."""
+    before = [0, 0, 0, 100]
+    dusty = [60, 80, 90, 100]  # the finest sieve passes 60 %: above the boundary's 0 % at `finest`
+    assert grading.bbi(before, dusty, SIEVES, finest=1.0) == pytest.approx(1.0, rel=1e-12)
+    assert 0 <= grading.bbi(before, [30, 30, 40, 100], SIEVES, finest=1.0) <= 1

@@ -37,7 +37,7 @@ def test_values_from_the_command_line_are_checked():
 def test_script_refuses_abbreviation_before_any_work(tmp_path):
     p = yade(['--F', '2', '--results', tmp_path / 'r'])
     assert p.returncode == 2
-    assert 'unrecognized arguments: --F 2' in p.stderr
+    assert 'oedometer.py: unknown option --F: ' in p.stderr and 'did you mean --f' in p.stderr
     assert not (tmp_path / 'r').exists()
 
 
@@ -96,3 +96,14 @@ def test_audit_cases_exit_2_before_any_work(args, name, words, tmp_path, capsys)
     assert err.startswith('oedometer.py: bad parameter %s: Oedometer: %s = ' % (name, name)), err
     assert words in err and err.count('\n') == 1
     assert not (tmp_path / 'r' / 'packings').exists() or name == 'packingDir'
+
+
+@pytest.mark.parametrize('argv,words', [(['--F', '2'], 'unknown option --F: the options are the parameters of --help'),
+                                        (['--foo', '1'], 'unknown option --foo'),
+                                        (['--f'], 'option --f needs a value: a finite number > 0 [Hz]'),
+                                        (['--f', '1', '--f', '2'], 'option --f given twice (1 and 2)')])
+def test_argparse_errors_are_one_line_naming_the_option(argv, words, capsys):
+    with pytest.raises(SystemExit) as e:
+        commandline.readParams(argv)
+    err = capsys.readouterr().err
+    assert e.value.code == 2 and words in err and err.count('\n') == 1, err

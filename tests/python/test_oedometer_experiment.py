@@ -426,10 +426,9 @@ def test_a_run_whose_outputs_fail_keeps_its_state_and_says_how_to_get_them(stron
         run.run()
     end = os.path.join(run.out, 'state-end.yade.gz')
     assert os.path.isfile(end) and not os.path.exists(os.path.join(run.out, 'summary.json'))
-    assert "Oedometer.reopen(%r)" % end in capsys.readouterr().out
+    assert "Oedometer.rebuild(%r)" % end in capsys.readouterr().out
     monkeypatch.undo()
-    e = Oedometer.reopen(end, results=os.path.join(root, 'broken'), runId='rebuilt')
-    e.outputs.finish(e.summary())
+    e = Oedometer.rebuild(end, results=os.path.join(root, 'broken'), runId='rebuilt')
     with open(os.path.join(e.out, 'summary.json')) as fh:
         assert json.load(fh)['cycles'] == pytest.approx(1, rel=1e-3)
 

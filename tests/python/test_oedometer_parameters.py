@@ -103,3 +103,22 @@ def test_parameters_are_frozen_and_give_the_derived_values():
     assert q.T == 0.5 and p.T == 0.25                     # a new value is a new, checked object
     with pytest.raises(ParamError, match='f = -1'):
         p.replace(f=-1)
+
+
+@pytest.mark.parametrize('values,name,words', [
+    ({'Tc': '1'}, 'Tc', 'longer than the load cycle'), ({'f': '8', 'Tc': '0.2'}, 'Tc', 'longer than the load cycle'),
+    ({'vtk': '1'}, 'vtk', 'longer than the loading'), ({'saveEvery': '0.2'}, 'saveEvery', 'longer than the loading'),
+    ({'abrasionPeriod': '10000000'}, 'abrasionPeriod', 'longer than the load cycle'),
+    ({'crush': 'yes'}, 'crush', 'expected 0 or 1'), ({'fatigue': 'True'}, 'fatigue', 'expected 0 or 1'),
+    ({'seed': '0x10'}, 'seed', 'decimal'), ({'f': '1_000'}, 'f', 'decimal'), ({'seed': '0o17'}, 'seed', 'decimal')])
+def test_what_cannot_make_sense_is_refused(values, name, words):
+    """The audit: --Tc 1, --f 8 --Tc 0.2 ran without a check in the cycle; --crush yes, --seed 0x10, --f 1_000 were read."""
+    with pytest.raises(ParamError) as e:
+        check(values, text=True)
+    assert e.value.name == name and words in str(e.value)
+
+
+def test_periods_within_their_bounds_are_taken():
+    p = check({'f': '8', 'Tc': '0.125', 'cycles': '3', 'saveEvery': '0.3', 'vtk': '0.375', 'crush': '0', 'seed': '16'},
+              text=True)
+    assert (p['Tc'], p['saveEvery'], p['crush'], p['seed']) == (0.125, 0.3, False, 16)

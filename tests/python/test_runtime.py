@@ -132,3 +132,18 @@ def test_a_state_of_the_older_format_is_refused_in_one_line():
     import ballast.engines
     with pytest.raises(runtime.StateFormatError, match='older version'):
         ballast.engines._fire('0123456789ab')
+
+
+@pytest.mark.parametrize('tag,words', [('', 'blank'), ('{"format": 2, "tok', 'not a JSON document'),
+                                       ('[1, 2]', 'expected a JSON object'),
+                                       ('{"format": 2, "token": "t", "objects": {"a": 1}}', "object 'a' is not"),
+                                       ('{"format": 2, "token": "t", "objects": {"a": {"type": "test.Counter", "state": {}}}}',
+                                        'cannot be rebuilt')])
+def test_a_damaged_document_is_refused_in_one_line(tag, words):
+    """The audit: a blank or damaged O.tags['ballast'] gave a bare JSONDecodeError or 'PyRunner error.'."""
+    O.reset()
+    O.tags[runtime.TAG] = tag
+    with pytest.raises(runtime.StateFormatError) as e:
+        runtime.restore()
+    assert words in str(e.value) and "O.tags['ballast']" in str(e.value) and '\n' not in str(e.value)
+    O.reset()

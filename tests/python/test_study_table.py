@@ -171,3 +171,14 @@ def test_audit_cells_are_refused_naming_column_value_and_range(column, value, al
     msg = refused('seed %s\n1 %s\n' % (column, value) if column != 'seed' else 'seed\n%s\n' % value)
     assert 't.table:2: ' in msg and allowed in msg, msg
     assert column in msg
+
+
+@pytest.mark.parametrize('content', [b'seed f\n1 \xff\xfe\n', b'\x1f\x8b\x08\x00binary', b'seed\x00 f\n1 2\n'])
+def test_a_binary_or_non_utf8_table_is_refused_naming_the_file(tmp_path, content):
+    path = tmp_path / 'bad.table'
+    path.write_bytes(content)
+    with pytest.raises(StudyError, match='bad.table: not a text table'):
+        Table(str(path))
+    script = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), 'scripts', 'study.py')
+    p = subprocess.run([sys.executable, script, 'run', str(path), '--dry-run'], capture_output=True, text=True, timeout=120)
+    assert p.returncode == 2 and str(path) in p.stderr and 'Traceback' not in p.stderr, p.stderr[-2000:]

@@ -12,11 +12,22 @@ def unitOf(data, quantity):
     return dict(data.declaration.results).get(quantity, '-')
 
 
-def detectable(alpha, power):
-    """z_(1-alpha/2) + z_power: a two-sided test at `alpha` finds a difference of two means of this many
-    standard errors with probability `power`."""
-    from scipy import stats
-    return stats.norm.ppf(1 - alpha / 2) + stats.norm.ppf(power)
+def detectable(alpha, power, dof):
+    """The difference of two means, in standard errors, that a two-sided t test at `alpha` with `dof`
+    degrees of freedom (those of the standard deviation) finds with probability `power`: the
+    noncentrality d of the noncentral t distribution with P(|T| > t_(1-alpha/2, dof)) = power
+    (scipy.stats.nct; at 5 and 5 runs 3.20, where the normal approximation z_(1-alpha/2) + z_power
+    gives 2.80)."""
+    from scipy import optimize, stats
+    tc = stats.t.ppf(1 - alpha / 2, dof)
+
+    def shortfall(d):
+        return stats.nct.sf(tc, dof, d) + stats.nct.cdf(-tc, dof, d) - power
+    with np.errstate(all='ignore'):
+        hi = stats.norm.ppf(1 - alpha / 2) + stats.norm.ppf(power)
+        while shortfall(hi) < 0:
+            hi *= 2
+        return float(optimize.brentq(shortfall, 0.0, hi, xtol=1e-12))
 
 
 def effectTest(data, alpha=0.05, power=0.8):
@@ -24,7 +35,7 @@ def effectTest(data, alpha=0.05, power=0.8):
     peak)? The Kruskal-Wallis H test across its values (scipy.stats.kruskal; ties corrected) and the
     smallest difference of two means the runs could have detected: a two-sided test at `alpha` finds it
     with probability `power` given the pooled standard deviation s and the smallest group n,
-    (z_(1-alpha/2) + z_power) s sqrt(2/n). None with fewer than two values of two runs each."""
+    d s sqrt(2/n), d by the t distribution of the pooled degrees of freedom (:func:`detectable`). None with fewer than two values of two runs each."""
     from scipy import stats
     groups = [np.array([r.summary[data.response] for r in data.runs if r.value == v]) for v in data.values]
     groups = [g for g in groups if len(g) >= 2]
@@ -41,7 +52,7 @@ def effectTest(data, alpha=0.05, power=0.8):
     return {'test': 'Kruskal-Wallis', 'quantity': data.response, 'parameter': data.param, 'groups': len(groups),
             'runs': int(sum(len(g) for g in groups)), 'H': float(H), 'p': float(p), 'alpha': alpha, 'power': power,
             'pooledStd [%s]' % unit: pooled, 'smallestGroup': n,
-            'detectableDifference [%s]' % unit: float(detectable(alpha, power) * pooled * np.sqrt(2 / n))}
+            'detectableDifference [%s]' % unit: float(detectable(alpha, power, dof) * pooled * np.sqrt(2 / n))}
 
 
 def blockedTest(data, quantity=None, alpha=0.05, power=0.8):
@@ -65,7 +76,7 @@ def withinSeeds(y, numeric, unit, alpha=0.05, power=0.8):
     parameter; scipy.stats.friedmanchisquare) and the difference of two means it could have detected:
     as effectTest's, with the residual standard deviation of the two-way layout (seed + value) in place
     of the pooled one, s_r = sqrt(sum r_ij^2 / ((b - 1)(k - 1))), r_ij = y_ij - row mean - column mean
-    + grand mean, and b seeds. For a numeric parameter (columns in its order) also Page's test of a
+    + grand mean, b seeds and (b - 1)(k - 1) degrees of freedom. For a numeric parameter (columns in its order) also Page's test of a
     monotonic trend along it (scipy.stats.page_trend_test, for a rise and for a fall; pTrend is twice the
     smaller p, the two-sided p)."""
     from scipy import stats
@@ -77,7 +88,7 @@ def withinSeeds(y, numeric, unit, alpha=0.05, power=0.8):
     res = y - y.mean(axis=1, keepdims=True) - y.mean(axis=0, keepdims=True) + y.mean()
     sr = float(np.sqrt((res**2).sum() / ((b - 1) * (k - 1))))
     out = {'seeds': b, 'values': k, 'chi2': float(chi2), 'p': float(p), 'residualStd [%s]' % unit: sr,
-           'detectableDifference [%s]' % unit: float(detectable(alpha, power) * sr * np.sqrt(2 / b))}
+           'detectableDifference [%s]' % unit: float(detectable(alpha, power, (b - 1) * (k - 1)) * sr * np.sqrt(2 / b))}
     if numeric:
         rise = stats.page_trend_test(y)
         fall = stats.page_trend_test(y, predicted_ranks=list(range(k, 0, -1)))

@@ -9,19 +9,70 @@ reopening through :mod:`ballast.runtime`.
     exp.summary()                    # what summary.json holds
     exp.save(path); SomeExperiment.reopen(path, readOnly=True)
 
+Every file is written atomically (a temporary name in the same folder, synced, then renamed:
+:func:`ballast.study.files.writeAtomic`; states by :meth:`Experiment.save`), so a killed run leaves
+whole files or none. An experiment that calls :meth:`Experiment.markRunning` and
+:meth:`Experiment.markFinished` keeps ``run.json`` in its folder: ``{"status": "running", ...}`` from
+the start, ``"finished"`` once every output is written; ``running`` in a folder whose process is gone
+is a killed run.
+
 A subclass gives ``NAME``, ``Parameters`` (its Parameters class), ``REOPEN_PARAMS`` (what a reopened
 run may change: where and how it reports, not the physics), ``prepare()``, ``summary()``, and its
 state (``state()``, ``fromState()``); its pieces are registered objects of their own.
 """
+import gzip
+import json
 import os
+import socket
 import time
+import zlib
 
 from yade import O
 
 from .. import runtime
 from ..names import runDirName
 from ..params import ParamError, requireWritableDir
+from ..study.files import syncDir, writeAtomic
 from .phases import Phases
+
+STATUS_FILE = 'run.json'
+
+
+class StateFileError(RuntimeError):
+    """A state file that cannot be loaded: the message names the file and the cause, in one line."""
+
+
+def checkStateFile(path, who='reopen'):
+    """Raise StateFileError naming `path` and what is wrong with it, before O.load meets it (YADE's own errors
+    name neither: 'gzip error', a bare MemoryError). Reads a gzip state through to its end (its CRC)."""
+    def bad(why):
+        raise StateFileError('%s: %s is not a loadable state: %s' % (who, path, why))
+    if not os.path.isfile(path):
+        raise FileNotFoundError('%s: no such state file: %s' % (who, path))
+    size = os.path.getsize(path)
+    if size == 0:
+        bad('the file is empty (0 bytes: a save that was cut off?)')
+    with open(path, 'rb') as fh:
+        magic = fh.read(2)
+    if path.endswith('.gz'):
+        if magic != b'\x1f\x8b':
+            bad('not gzip data (the name ends in .gz, the first bytes are %r)' % magic)
+        try:
+            with gzip.open(path, 'rb') as fh:
+                head = fh.read(64)
+                while fh.read(1 << 22):
+                    pass
+        except EOFError:
+            bad('the gzip data is cut short (%d bytes: a save that was cut off?)' % size)
+        except (OSError, zlib.error) as e:
+            bad('damaged gzip data (%s)' % e)
+    elif path.endswith('.xml'):
+        with open(path, 'rb') as fh:
+            head = fh.read(64)
+    else:
+        return
+    if not (head.lstrip().startswith(b'<?xml') or b'serialization::archive' in head):
+        bad('its content is not a YADE state (neither XML nor a boost archive: it starts with %r)' % head[:16])
 
 
 @runtime.persistent('RunDirectory')
@@ -55,6 +106,16 @@ class RunDirectory:
 
     def file(self, name):
         return os.path.join(self.create(), name)
+
+    def writeStatus(self, status, **info):
+        """run.json: the status ('running', 'finished') and what else the experiment says, written atomically."""
+        path = self.file(STATUS_FILE)
+        doc = {}
+        if os.path.exists(path):
+            with open(path) as fh:
+                doc = json.load(fh)
+        doc.update(info, status=status, time=time.strftime('%Y-%m-%d %H:%M:%S'))
+        writeAtomic(path, json.dumps(doc, indent=1) + '\n')
 
     def state(self):
         return {'results': self.results, 'wanted': self.wanted, 'runId': self.runId, 'path': self.path}
@@ -131,9 +192,37 @@ class Experiment:
 
     # ------------------------------------------------------------------ saving and reopening
     def save(self, path):
-        """O.save(path): the scene with the state of the experiment, its pieces and the engines."""
+        """O.save(path): the scene with the state of the experiment, its pieces and the engines. Written to a
+        temporary name in the same folder, synced, then renamed: a state file is whole or absent."""
         self.saved.append(path)
-        O.save(path)
+        folder, name = os.path.split(os.path.abspath(path))
+        tmp = os.path.join(folder, '.tmp-%d-%s' % (os.getpid(), name))  # the same suffix: YADE compresses by it
+        try:
+            O.save(tmp)
+            fd = os.open(tmp, os.O_RDONLY)
+            try:
+                os.fsync(fd)
+            finally:
+                os.close(fd)
+            os.replace(tmp, path)
+        finally:
+            if os.path.exists(tmp):
+                os.remove(tmp)
+        syncDir(folder)
+        if self.status == 'running' and self.dir.path is not None:
+            self.dir.writeStatus(self.status, lastState=os.path.basename(path), iter=O.iter, time=O.time)
+
+    status = None  # 'running' between markRunning and markFinished
+
+    def markRunning(self, **info):
+        """run.json says 'running' (with the process, so that a killed run is told from a live one)."""
+        self.status = 'running'
+        self.dir.writeStatus('running', experiment=self.NAME, pid=os.getpid(), host=socket.gethostname(), **info)
+
+    def markFinished(self, **info):
+        """run.json says 'finished': every output is written."""
+        self.status = 'finished'
+        self.dir.writeStatus('finished', **info)
 
     def baseState(self):
         wall, cpu = self.seconds()
@@ -177,7 +266,12 @@ class Experiment:
     @classmethod
     def reopen(cls, path, readOnly=False, **overrides):
         """O.load(path) of a state saved by a run, and its experiment back (see fromScene)."""
-        if not os.path.isfile(path):
-            raise FileNotFoundError('%s.reopen: no such state file: %s' % (cls.NAME, path))
-        O.load(path)
+        who = '%s.reopen' % cls.NAME
+        checkStateFile(path, who)
+        try:
+            O.load(path)
+        except Exception as e:  # YADE's messages name neither the file nor the cause
+            raise StateFileError('%s: %s is not a loadable state: YADE could not read it (%s: %s; an XML state cut short '
+                                 'or damaged inside its compression?)' % (who, path, type(e).__name__, e or 'no message')) \
+                from None
         return cls.fromScene(readOnly=readOnly, **overrides)

@@ -1,8 +1,12 @@
-"""What every experiment's command line shares: a ``--name value`` option per declared parameter (no
-abbreviations), negative numbers as values, the yade-batch row read by the study's table reader, and
-everything checked once by the experiment's Parameters (text=True) before any work."""
+"""What every experiment's command line shares: a ``--name value`` option per declared parameter (in full,
+each once), negative numbers as values, argparse's errors in one line naming the option and what is
+allowed, the yade-batch row read by the study's table reader, and everything checked once by the
+experiment's Parameters (text=True) before any work."""
+import argparse
+import difflib
 import os
 import re
+import sys
 
 _NUMBER = re.compile(r'^-(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?$|^-(inf|nan)$', re.IGNORECASE)
 
@@ -13,10 +17,49 @@ def metavar(p):
     return 'V' if p.unit == '-' else p.unit.upper().replace(' ', '').replace('^', '')
 
 
+class OneLineParser(argparse.ArgumentParser):
+    """argparse whose errors are one line naming the option and what is allowed (not the usage), exit 2.
+    script: the name the errors start with; params: the declarations the messages quote."""
+
+    def __init__(self, script, params, **kw):
+        argparse.ArgumentParser.__init__(self, allow_abbrev=False, **kw)
+        self.script, self.params = script, params
+
+    def error(self, message):
+        sys.stderr.write('%s: %s\n' % (self.script, explain(message, self.params)))
+        sys.exit(2)
+
+
+def explain(message, params):
+    """argparse's message in the words of the parameters."""
+    m = re.match(r'unrecognized arguments: (\S+)', message)
+    if m:
+        name = m.group(1).split('=')[0]
+        lower = {k.lower(): k for k in params}
+        close = [lower[k] for k in difflib.get_close_matches(name.lstrip('-').lower(), list(lower), n=3, cutoff=0.5)]
+        return 'unknown option %s: the options are the parameters of --help (names in full)%s' % (
+            name, '; did you mean %s?' % ', '.join('--' + c for c in close) if close else '')
+    m = re.match(r'argument --(\w+): expected one argument', message)
+    if m and m.group(1) in params:
+        p = params[m.group(1)]
+        return 'option --%s needs a value: %s [%s]' % (m.group(1), p.allowed, p.unit)
+    return message
+
+
+class Once(argparse.Action):
+    """An option given once: a second --f is refused (argparse would keep the last silently)."""
+
+    def __call__(self, parser, namespace, values, option_string=None):
+        if getattr(namespace, self.dest) is not None:
+            parser.error('option %s given twice (%s and %s): give it once' % (option_string, getattr(namespace, self.dest),
+                                                                             values))
+        setattr(namespace, self.dest, values)
+
+
 def addParameters(ap, params):
-    """An option --name per parameter, its help from the declaration (doc, unit, range, default)."""
+    """An option --name per parameter, given at most once, its help from the declaration."""
     for name, p in params.items():
-        ap.add_argument('--' + name, default=None, metavar=metavar(p),
+        ap.add_argument('--' + name, default=None, metavar=metavar(p), action=Once,
                         help=('%s [%s] (%s; default %r)' % (p.doc, p.unit, p.allowed, p.default)).replace('%', '%%'))
     return ap
 
@@ -37,8 +80,9 @@ def joinNegativeValues(argv):
 
 
 def tableValues(declaration):
-    """Under yade-batch (YADE_BATCH=table:line): the row's raw cells (ballast.study.table.tableRow), then
-    YADE's readParamsFromTable sets O.tags (description, d.id) as yade-batch does. Else {}."""
+    """Under yade-batch (YADE_BATCH=table:line): the row's raw cells (ballast.study.table.tableRow: every
+    column a parameter, every cell readable, named otherwise), then YADE's readParamsFromTable sets O.tags
+    (description, d.id) as yade-batch does. Else {}."""
     from yade import utils
     if not utils.runningInBatch():
         return {}
@@ -49,9 +93,13 @@ def tableValues(declaration):
     return cells
 
 
+def parse(ap, argv):
+    """The options given, as {dest: text} (None for those not given)."""
+    return vars(ap.parse_args(joinNegativeValues(argv)))
+
+
 def readParams(ap, argv, declaration):
     """defaults <- yade-batch row <- command line, checked once (ParamError names a bad one)."""
     values = tableValues(declaration)
-    values.update({k: v for k, v in vars(ap.parse_args(joinNegativeValues(argv))).items()
-                   if v is not None and k in declaration.params})
+    values.update({k: v for k, v in parse(ap, argv).items() if v is not None and k in declaration.params})
     return declaration.check(values, text=True)

@@ -24,6 +24,7 @@ class Phases:
         self.started = time.time()
         self.steps, self.wall = {}, {}
         self.done, self.finished = None, False
+        self.running = None  # (phase, O.iter, wall time) at the start of the phase being run
 
     def say(self, msg):
         print('[%s %7.1fs] %s' % (self.name, time.time() - self.started, msg), flush=True)
@@ -38,11 +39,10 @@ class Phases:
             afterChunk=None):
         """Run until O.time reaches tEnd [s] or done() is true, a progress line every progressSeconds.
         simSpan: planned simulated duration [s] of the phase, from simStart (for % and time left)."""
-        w0, i0 = time.time(), O.iter
+        w0, i0, t0 = time.time(), O.iter, O.time
         lastPrint = time.time()
         chunk = 500
-        hist = []  # (wall, sim) of the last 30 s: the rate behind the time left
-        self.finished, self.done = False, done
+        self.finished, self.done, self.running = False, done, (phase, i0, w0)
         if done is not None:
             O.engines = O.engines + [runtime.callback(self, 'check', iterPeriod=checkEvery, label=self.LABEL)]
         try:
@@ -57,23 +57,31 @@ class Phases:
                 if afterChunk is not None:
                     afterChunk()
                 now = time.time()
-                hist.append((now, O.time))
-                hist = [h for h in hist if now - h[0] < 30] or hist[-1:]
                 if now - lastPrint >= self.progressSeconds:
                     lastPrint = now
-                    self.say(self._line(phase, hist, simSpan, simStart, extra))
+                    self.say(self._line(phase, (O.time - t0) / max(now - w0, 1e-9), simSpan, simStart, extra))
         finally:
             if done is not None:
                 O.engines = [e for e in O.engines if e.label != self.LABEL]
             self.done = None
-            self.steps[phase] = self.steps.get(phase, 0) + O.iter - i0
-            self.wall[phase] = self.wall.get(phase, 0) + time.time() - w0
+            self.steps, self.wall = self.counts()
+            self.running = None
 
-    def _line(self, phase, hist, simSpan, simStart, extra):
+    def counts(self):
+        """(steps, wall seconds) per phase, the phase being run included up to now: a state saved mid-phase
+        carries them, so a resumed run counts on from there."""
+        steps, wall = dict(self.steps), dict(self.wall)
+        if self.running is not None:
+            phase, i0, w0 = self.running
+            steps[phase] = steps.get(phase, 0) + O.iter - i0
+            wall[phase] = wall.get(phase, 0) + time.time() - w0
+        return steps, wall
+
+    def _line(self, phase, rate, simSpan, simStart, extra):
+        """rate: simulated over wall seconds since the phase (or its resumption) began, stable from line to line."""
         line = '%-8s t=%.4f s  step %d  dt=%.2e s' % (phase, O.time, O.iter, O.dt)
         if simSpan:
             elapsed = O.time - simStart
-            rate = (hist[-1][1] - hist[0][1]) / max(hist[-1][0] - hist[0][0], 1e-9) if len(hist) > 1 else 0
             eta = (simSpan - elapsed) / rate if rate > 0 else None
             line += '  %5.1f%% of %s  ETA %s' % (100 * min(elapsed / simSpan, 1), 'loading' if phase == 'load' else 'phase',
                                                  fmtTime(eta))
@@ -82,7 +90,8 @@ class Phases:
         return line
 
     def state(self):
-        return {'steps': self.steps, 'wall': self.wall, 'progressSeconds': self.progressSeconds, 'name': self.name}
+        steps, wall = self.counts()
+        return {'steps': steps, 'wall': wall, 'progressSeconds': self.progressSeconds, 'name': self.name}
 
     @classmethod
     def fromState(cls, s, ref=None):

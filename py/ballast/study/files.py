@@ -104,3 +104,13 @@ def readFiles(top):
             with open(p, 'rb') as fh:
                 files[os.path.relpath(p, top)] = fh.read()
     return files
+
+
+def saveFigure(fig, path, dpi=120):
+    """A matplotlib figure as a PNG at path, written atomically (writeAtomic); the figure closed."""
+    import io
+    import matplotlib.pyplot as plt
+    buf = io.BytesIO()
+    fig.savefig(buf, dpi=dpi, format='png')
+    plt.close(fig)
+    writeAtomic(path, buf.getvalue())

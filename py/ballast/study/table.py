@@ -42,6 +42,20 @@ def tableReader():
     return sys.modules['yade.utils'].TableParamReader
 
 
+def readText(path):
+    """A table's text; StudyError naming the file if it is not UTF-8 text (a binary file, another encoding)."""
+    with open(path, 'rb') as fh:
+        data = fh.read()
+    try:
+        text = data.decode('utf-8')
+    except UnicodeDecodeError as e:
+        raise StudyError('%s: not a text table: byte %d (0x%02x) is not UTF-8 (a binary file or another encoding?)' % (
+            path, e.start, data[e.start])) from None
+    if '\0' in text:
+        raise StudyError('%s: not a text table: it holds a NUL byte at %d (a binary file?)' % (path, text.index('\0')))
+    return text
+
+
 class Table:
     """A yade-batch table as yade-batch reads it. ``rows``: [(line, {column: cell text})] with the
     file's 1-based line numbers, '=' resolved (``byLine``: the same by line); ``columns`` as YADE
@@ -57,8 +71,7 @@ class Table:
     def __init__(self, path, text=None, ids=True):
         self.path = path
         if text is None:
-            with open(path) as fh:
-                text = fh.read()
+            text = readText(path)
         # the reader cuts the last character of every line, meant to be the newline
         self.text = text if text.endswith('\n') else text + '\n'
         # the lines as the reader splits them, only to name a line it would misread

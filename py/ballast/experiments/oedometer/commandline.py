@@ -1,80 +1,50 @@
 """``yade scripts/oedometer.py``: the parameters from the command line (``--name value``) and from a
 yade-batch table row (a column per name), every one checked before any work, then one realization."""
 import argparse
-import os
-import re
 import sys
 
 from ...params import ParamError
 from ...study.options import StudyError
-from ...study.table import tableRow
+from .. import commandline
 from .declaration import DECLARATION
-from .parameters import PARAMS, check
+from .parameters import PARAMS
 
 PROG = 'yade scripts/oedometer.py'
-
-
-def _metavar(p):
-    if p.unit == 'path':
-        return 'PATH'
-    return 'V' if p.unit == '-' else p.unit.upper().replace(' ', '').replace('^', '')
+REBUILD = 'rebuild'
 
 
 def parser():
-    ap = argparse.ArgumentParser(prog=PROG, allow_abbrev=False, formatter_class=argparse.RawDescriptionHelpFormatter,
-                                 description='One realization of the oedometric test of Dubina & Elias (sections 4-5). '
-                                 'Every parameter can also be a yade-batch table column of the same name. '
-                                 'See docs/oedometer.md.')
-    for name, p in PARAMS.items():
-        ap.add_argument('--' + name, default=None, metavar=_metavar(p),
-                        help=('%s [%s] (%s; default %r)' % (p.doc, p.unit, p.allowed, p.default)).replace('%', '%%'))
+    ap = commandline.OneLineParser('oedometer.py', PARAMS, prog=PROG, formatter_class=argparse.RawDescriptionHelpFormatter,
+                                   description='One realization of the oedometric test of Dubina & Elias (sections 4-5). '
+                                   'Every parameter can also be a yade-batch table column of the same name. Numbers are '
+                                   'written in decimal (1e6, 0.5), flags as 0 or 1. See docs/oedometer.md.')
+    commandline.addParameters(ap, PARAMS)
+    ap.add_argument('--' + REBUILD, default=None, metavar='RUNDIR', action=commandline.Once,
+                    help='instead of a run: the outputs of the killed run in RUNDIR (run.json "running", no summary.json) '
+                    'up to its last state, into a new folder RUNDIR-2 (Oedometer.rebuild)')
     return ap
 
 
-def tableValues():
-    """The row of the yade-batch table (YADE_BATCH=table:line) as raw cells, read by the study's table reader
-    (ballast.study.table.tableRow: every column a parameter, every cell readable, named otherwise); YADE's
-    readParamsFromTable then sets O.tags (description, d.id) as under yade-batch."""
-    from yade import utils
-    if not utils.runningInBatch():
-        return {}
-    tableFile, line = os.environ['YADE_BATCH'].split(':')[:2]
-    cells = tableRow(tableFile, int(line), DECLARATION)
-    utils.readParamsFromTable(noTableOk=True, **{k: p.default for k, p in PARAMS.items()})
-    return cells
-
-
-_NUMBER = re.compile(r'^-(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?$|^-(inf|nan)$', re.IGNORECASE)
-
-
-def joinNegativeValues(argv):
-    """`--Fmax -1e6` as `--Fmax=-1e6`: argparse takes '-1e6' for an option, and the value then reaches
-    the parameter's check, which names what is allowed."""
-    out, i = [], 0
-    while i < len(argv):
-        a = argv[i]
-        if a.startswith('--') and '=' not in a and i + 1 < len(argv) and _NUMBER.match(argv[i + 1]):
-            out.append('%s=%s' % (a, argv[i + 1]))
-            i += 2
-        else:
-            out.append(a)
-            i += 1
-    return out
-
-
 def readParams(argv):
-    """defaults <- yade-batch table row <- command line, all checked. argparse exits with status 2
-    on names it does not know (no abbreviations)."""
-    values = tableValues()
-    values.update({k: v for k, v in vars(parser().parse_args(joinNegativeValues(argv))).items() if v is not None})
-    return check(values, text=True)
+    """defaults <- yade-batch table row <- command line, all checked (experiments.commandline.readParams)."""
+    return commandline.readParams(parser(), argv, DECLARATION)
 
 
 def main(argv=None):
     """The command line: exit status 2 and a message naming the parameter on a bad value."""
     from yade import utils
+    argv = sys.argv[1:] if argv is None else argv
+    rebuild = commandline.parse(parser(), argv)[REBUILD]
+    if rebuild is not None:
+        from .experiment import Oedometer
+        try:
+            run = Oedometer.rebuild(rebuild)
+        except (OSError, RuntimeError) as e:
+            sys.stderr.write('oedometer.py: --rebuild %s: %s\n' % (rebuild, e))
+            sys.exit(2)
+        return run, run.summary()
     try:
-        params = readParams(sys.argv[1:] if argv is None else argv)
+        params = readParams(argv)
         from .experiment import Oedometer
         run = Oedometer(parameters=params)  # checked once, by readParams
         run.checkOutputs()

@@ -17,7 +17,14 @@ The run saves itself at the start and at the end of loading (and every ``saveEve
 ``Oedometer.reopen(path)`` loads such a state in any process and gives the experiment back, ready to
 ``load()`` on (``readOnly=True``: to inspect it, writing nothing); a plain ``O.load(path)`` followed by
 ``O.run()`` rebuilds it at its first callback.
+
+A run keeps ``run.json`` in its folder: ``"status": "running"`` from the start (with the last state
+saved), ``"finished"`` once every output is written. A run killed on the way (``running``, no
+summary.json) gets its outputs up to its last state back with ``Oedometer.rebuild(runDir)``
+(``yade -x -n scripts/oedometer.py --rebuild RUNDIR``): into a new folder <run id>-2.
 """
+import glob
+import json
 import math
 import os
 
@@ -29,6 +36,7 @@ from ...engines import BallastAbrasionEngine, BallastCrushEngine
 from ...geometry import sphereVolume
 from ...names import fmtTime
 from ...params import CRUSH, validate
+from ...study.files import writeAtomic
 from .. import grains
 from ..base import Experiment
 from .loading import MODES
@@ -37,7 +45,7 @@ from .packing import StoredPacking
 from .parameters import OWNER, PARAMS, OedometerParameters
 from .probe import Probe, counter, degradingEngines, engine
 
-SAVER = 'oedoSaver'
+SAVER, CONTAINMENT = 'oedoSaver', 'oedoContainment'
 
 
 @runtime.persistent('Oedometer')
@@ -89,6 +97,7 @@ class Oedometer(Experiment):
         if self.out is None:
             self.checkOutputs()
             self.dir.create()
+            self.markRunning()
             self.say('run %s -> %s' % (self.runId, self.out))
         self.adopt()
         self.rig = self.packing.prepare(self)
@@ -113,28 +122,33 @@ class Oedometer(Experiment):
         if p['stopAt'] > 0 and done == 0:  # an early stop, a step past the crushing check after stopAt T
             tEnd = min(tEnd, t0 + p['stopAt'] * self.T + 1.5 * (p['Tc'] or O.dt))
         self.runUntil(self.loading.done, tEnd=tEnd, phase='load', simSpan=tEnd - tStart, simStart=tStart,
-                      afterChunk=self.checkContainment,
                       extra=lambda: 'cycle %d/%d  F=%.0f kN  delta=%.1f mm  crushed %d  abraded %d' % (
                           min(math.floor((O.time - t0) / self.T) + 1, total), total,
                           self.loading.force() / 1e3, self.loading.delta() * 1e3, self.counter('crush', 'nCrushed'),
                           self.counter('abrasion', 'nAbraded')))
         return self.finish()
 
-    def finish(self):
-        """The last row, the state at the end, every output file; returns the summary."""
-        self.outputs.record()  # the last row, at the end of the cycle
-        self.outputs.cycleEnd()
+    def finish(self, atEnd=True):
+        """The last row, the state at the end, every output file, run.json 'finished'; returns the summary.
+        atEnd=False (rebuild): the outputs of the state as it is, without a last row or frame."""
+        if atEnd:
+            self.outputs.record()  # the last row, at the end of the cycle
+            self.outputs.cycleEnd()
+            if self.p['vtk'] > 0:
+                self.outputs.vtk()  # the frame at the end of the cycle
+            self.checkContainment()
         end = os.path.join(self.out, 'state-end.yade.gz')
         self.save(end)
         try:
             s = self.summary()
             self.outputs.finish(s)
         except Exception as e:  # hours of loading are in the state: say how to get the outputs back
-            self.say('the outputs could not be written (%s: %s); the loaded state is saved: e = '
-                     'Oedometer.reopen(%r); e.outputs.finish(e.summary()) writes them' % (type(e).__name__, e, end))
+            self.say('the outputs could not be written (%s: %s); the loaded state is saved: Oedometer.rebuild(%r) '
+                     'writes them' % (type(e).__name__, e, end))
             raise
         if self.p['timing']:
             self._writeTiming()
+        self.markFinished(summary='summary.json')
         self.say('done in %s: peak F %.0f kN at delta %.2f mm, delta max %.2f mm, %d crushed, %d abraded, %d '
                  'steps; results in %s' % (fmtTime(s['wallSeconds']), s['peakForce'] / 1e3, s['deltaAtPeak'] * 1e3,
                                            s['deltaMax'] * 1e3, s['nCrushed'], s['nAbraded'], s['steps'], self.out))
@@ -155,6 +169,9 @@ class Oedometer(Experiment):
                         'volumeGrains': float(np.sum(sphereVolume(r))), 'radii': r.tolist(), 'masses': m.tolist()}
         self.probe = Probe(p, self.loading, self.rig, self.dir, self.initial)
         self.outputs.start(self.probe)
+        # containment at simulated times (the recorder's period): the same in every identical run
+        O.engines = O.engines + [runtime.callback(self, 'checkContainment', virtPeriod=self.T / p['samples'],
+                                                  label=CONTAINMENT)]
         if p['saveEvery'] > 0:  # first in the chain: a state saved before the step begins resumes exactly
             O.engines = [runtime.callback(self, 'checkpoint', virtPeriod=p['saveEvery'], virtLast=O.time,
                                           label=SAVER)] + list(O.engines)
@@ -203,8 +220,9 @@ class Oedometer(Experiment):
         return 1 - self.initial['volumeGrains'] / (math.pi * self.cylinder.Rin ** 2 * self.loading.z0)
 
     def checkContainment(self):
-        """Largest protrusion of a grain out of the cylinder (side, bottom, plate) and the number of
-        grains whose centre left it."""
+        """Largest protrusion of a grain out of the cylinder (past its flat inner faces, at diameter/2; the
+        bottom; the plate) and the number of grains whose centre left it. Called at simulated times (every
+        T/samples) and at the end."""
         x, r, _ = grains.arrays()
         if len(r) == 0:
             return
@@ -212,9 +230,9 @@ class Oedometer(Experiment):
         c = O.bodies[cyl.ids[0]].state.pos - cyl.pos0[0]
         rho = np.hypot(x[:, 0] - c[0], x[:, 1] - c[1])
         zTop = self.loading.top()
-        prot = np.maximum.reduce([rho + r - cyl.Rv, c[2] - (x[:, 2] - r), x[:, 2] + r - zTop])
+        prot = np.maximum.reduce([rho + r - cyl.Rin, c[2] - (x[:, 2] - r), x[:, 2] + r - zTop])
         self.maxProtrusion = max(self.maxProtrusion, float(prot.max()))
-        self.nEscaped = max(self.nEscaped, int(np.sum((rho > cyl.Rv) | (x[:, 2] < c[2]) | (x[:, 2] > zTop))))
+        self.nEscaped = max(self.nEscaped, int(np.sum((rho > cyl.Rin) | (x[:, 2] < c[2]) | (x[:, 2] > zTop))))
 
     # ------------------------------------------------------------------ results
     def summary(self):
@@ -232,9 +250,12 @@ class Oedometer(Experiment):
         half = min(p.peakTime(), a[-1, 0])  # eq. 8 peaks at T/2
         F5 = np.where(np.isfinite(a[:, 5]), a[:, 5], a[:, 1]) >= 0.05 * p['Fmax']
         before, after = self.grading()
+        cycles = float(a[-1, 0] / self.T)
         s = {
             'runId': self.runId,
-            'peakForce': float(a[k, 1]),
+            'peakForce': float(a[k, 1]),  # = peakGrainForce (the name older records have)
+            'peakGrainForce': float(a[k, 1]),
+            'peakAppliedForce': float(np.nanmax(a[:, 5])) if np.isfinite(a[:, 5]).any() else None,
             'deltaAtPeak': float(a[k, 2]),
             'deltaAtAppliedPeak': float(np.interp(half, a[:, 0], a[:, 2])),
             'forceAtAppliedPeak': float(np.interp(half, a[:, 0], a[:, 1])),
@@ -248,6 +269,7 @@ class Oedometer(Experiment):
             'massInitial': self.initial['massInitial'],
             'massFinal': float(np.sum(m)),
             'massLost': float(sum(e.massLost for e in engs)),
+            'dustPercent': 100.0 * float(sum(e.massLost for e in engs)) / self.initial['massInitial'],
             'wallSeconds': wall,
             'cpuSeconds': cpu,  # = wall on an idle machine, 1 thread
             'steps': sum(steps.values()),
@@ -262,7 +284,10 @@ class Oedometer(Experiment):
             'lostAsFines': p['lostAsFines'],
             'plateHeight0': self.loading.z0,
             'porosity0': self.porosity0(),
-            'cycles': float(a[-1, 0] / self.T),
+            # a whole number when the loading ended within a time step of one (the step loop stops there)
+            'cycles': int(round(cycles)) if abs(cycles - round(cycles)) * self.T <= O.dt else cycles,
+            'loadingTime': float(a[-1, 0]),
+            'loadingStartTime': self.loading.t0,
             'forceErrorRms': float(np.sqrt(np.mean((a[loaded, 1] - target[loaded]) ** 2))) if loaded.any() else None,
             'dtFinal': O.dt,
             # the state at the end (the half-load sweep's columns when stopAt stops the loading early)
@@ -291,8 +316,7 @@ class Oedometer(Experiment):
         buf = io.StringIO()
         with contextlib.redirect_stdout(buf):
             timing.stats()
-        with open(os.path.join(self.out, 'timing.txt'), 'w') as fh:
-            fh.write(buf.getvalue())
+        writeAtomic(os.path.join(self.out, 'timing.txt'), buf.getvalue())
 
     # ------------------------------------------------------------------ saving and reopening
     def state(self):
@@ -321,8 +345,34 @@ class Oedometer(Experiment):
         self.restored()
         if not self.dir.readOnly:
             self.dir.create()
+            self.markRunning(continues=self.dir.previous, fromIter=O.iter)
         self.say('reopened %s at t = %.6f s (loading time %.6f s) -> %s' % (
             self.dir.wanted, O.time, O.time - self.loading.t0, self.out or 'read only, no run directory'))
+
+    @classmethod
+    def rebuild(cls, runDir, **overrides):
+        """The outputs of a killed run (run.json 'running', no summary.json) up to its last state: reopened
+        and finished as it is (no last row), into a new folder <run id>-2. runDir: the run's folder or a
+        state file. Returns the experiment."""
+        state = runDir if os.path.isfile(runDir) else lastState(runDir)
+        exp = cls.reopen(state, **overrides)
+        exp.finish(atEnd=False)
+        return exp
+
+
+def lastState(runDir):
+    """The last state a run saved: run.json's lastState, else state-end, else the saveEvery state of the
+    highest iteration, else state-start."""
+    try:
+        with open(os.path.join(runDir, 'run.json')) as fh:
+            named = [json.load(fh).get('lastState') or '']
+    except (OSError, ValueError):
+        named = []
+    iters = sorted(os.path.basename(f) for f in glob.glob(os.path.join(runDir, 'state-iter*.yade.gz')))
+    for name in named + ['state-end.yade.gz'] + iters[::-1] + ['state-start.yade.gz']:
+        if name and os.path.isfile(os.path.join(runDir, name)):
+            return os.path.join(runDir, name)
+    raise FileNotFoundError('Oedometer.rebuild: no state file in %s (run.json, state-*.yade.gz)' % runDir)
 
 
 __all__ = ['Oedometer', 'PARAMS']

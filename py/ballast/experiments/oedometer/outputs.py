@@ -1,8 +1,13 @@
 """What a run leaves (docs/oedometer.md, "Output"): fd.csv (F-delta, also in yade.plot), checks.csv
 (one line per crushing check), events.csv, grains.csv (per-grain state), summary.json, fd.png and
-optional VTK files with a .pvd time series for ParaView. Grains are coloured by state in YADE's 3D
-view: original, fragment (by generation), abraded."""
+optional VTK files with a .pvd time series for ParaView (grains, walls and the contact force network per
+frame). Grains are coloured by state in YADE's 3D view: original (every grain sand-coloured from the
+start of loading), fragment (by generation), abraded.
+
+Every file is written atomically (a temporary name, synced, renamed). fd.csv is also streamed while
+loading (a live log, flushed by the OS) and written again atomically from the rows at the end."""
 import csv
+import io
 import json
 import os
 
@@ -11,6 +16,7 @@ from yade import O, plot
 from yade.wrapper import Facet, Sphere
 
 from ... import _ballast, grading, harvest, runtime
+from ...study.files import saveFigure, writeAtomic
 
 FD_COLUMNS = ('t', 'F', 'delta', 'nCrushed', 'nAbraded', 'Fapplied')
 CHECK_COLUMNS = ('t', 'iter', 'nCrushed', 'maxStressRatio', 'maxCrushableRatio')
@@ -112,10 +118,13 @@ class Outputs:
 
     def bind(self, exp):
         """Read the run through this Probe (at start and after a restore); the files are written again from the
-        rows when the first is due (open)."""
+        rows when the first is due (open). Every grain is painted by its state (originals sand-coloured)."""
         self.exp, self.fd = exp, None
-        self.grains = GrainStates()  # generations and abrasions from the engines' events; grains coloured
-        self._recolor()
+        self.grains = GrainStates()  # generations and abrasions from the engines' events
+        self.grains.update(exp.degradingEngines())
+        for b in O.bodies:
+            if b is not None and isinstance(b.shape, Sphere):
+                b.shape.color = self.grains.color(b.id)
 
     def open(self):
         """fd.csv written from the rows so far, the live plot filled."""
@@ -134,7 +143,7 @@ class Outputs:
         plot.plots = {'delta': ('F',)}  # YADE's live plot (and yade-batch's) show F-delta
 
     def _writeRow(self, row):
-        self.fd.write('%.9g,%.9g,%.9g,%d,%d,%.9g\n' % row)
+        self.fd.write(fdLine(row))
 
     def record(self):
         exp = self.exp
@@ -158,9 +167,10 @@ class Outputs:
 
     def cycleEnd(self):
         """A row of cycles.csv: the cycle just ended, the permanent settlement (delta at the cycle's lowest
-        force, its end), the resilient displacement (delta at its peak, T/2 before, minus that), the crushes
-        and abrasions in it, Marsal's B_g after it and the largest fatigue damage D of a grain (0 without
-        fatigue)."""
+        force, its end), the resilient displacement (the largest delta within the cycle minus that: what the
+        sample springs back from its deepest point, >= 0 by construction, also in the first cycle, where the
+        plate may sink on after the peak), the crushes and abrasions in it, Marsal's B_g after it and the
+        largest fatigue damage D of a grain (0 without fatigue)."""
         exp = self.exp
         t = O.time - exp.loading.t0
         k = int(round(t / exp.T))
@@ -168,16 +178,17 @@ class Outputs:
             return
         a = np.array(self.rows)
         settlement = exp.loading.delta()
-        peak = float(np.interp((k - 0.5) * exp.T, a[:, 0], a[:, 2]))
+        within = a[(a[:, 0] >= (k - 1) * exp.T) & (a[:, 0] <= t), 2]
+        deepest = max(float(np.max(within, initial=settlement)), settlement)
         crushed, abraded = exp.counter('crush', 'nCrushed'), exp.counter('abrasion', 'nAbraded')
-        self.cycleRows.append((k, t, settlement, peak - settlement, crushed, abraded, grading.marsal(*exp.grading()),
+        self.cycleRows.append((k, t, settlement, deepest - settlement, crushed, abraded, grading.marsal(*exp.grading()),
                                exp.counter('crush', 'maxDamage')))
-        with open(os.path.join(exp.out, 'cycles.csv'), 'w') as fh:
-            fh.write(','.join(CYCLE_COLUMNS) + '\n')
-            for i, row in enumerate(self.cycleRows):
-                prev = self.cycleRows[i - 1][4:6] if i else (0, 0)
-                fh.write('%d,%.9g,%.9g,%.9g,%d,%d,%.6g,%.6g\n' % (tuple(row[:4]) + (row[4] - prev[0], row[5] - prev[1], row[6],
-                                                                        row[7] if len(row) > 7 else 0.0)))
+        lines = [','.join(CYCLE_COLUMNS) + '\n']
+        for i, row in enumerate(self.cycleRows):
+            prev = self.cycleRows[i - 1][4:6] if i else (0, 0)
+            lines.append('%d,%.9g,%.9g,%.9g,%d,%d,%.6g,%.6g\n' % (tuple(row[:4]) + (row[4] - prev[0], row[5] - prev[1],
+                                                                   row[6], row[7] if len(row) > 7 else 0.0)))
+        writeAtomic(os.path.join(exp.out, 'cycles.csv'), ''.join(lines))
 
     def logCheck(self):
         crush = self.exp.engine('crush')
@@ -216,49 +227,52 @@ class Outputs:
 
     # ------------------------------------------------------------------ VTK for ParaView
     def vtk(self):
+        """A frame: grains, walls and the contact force network (vtk/*-<iter>.vtu), listed in oedometer.pvd."""
         exp = self.exp
         t = O.time - exp.loading.t0
+        if self.vtkFrames and self.vtkFrames[-1][0] >= t:
+            return
         n = O.iter
-        grains, walls = 'vtk/grains-%09d.vtu' % n, 'vtk/walls-%09d.vtu' % n
+        grains, walls, contacts = ('vtk/%s-%09d.vtu' % (part, n) for part in ('grains', 'walls', 'contacts'))
         writeGrainsVtu(os.path.join(exp.out, grains), self.grainTable())
         writeWallsVtu(os.path.join(exp.out, walls), exp.cylinder.ids, exp.loading.top(), exp.cylinder.Rv)
-        self.vtkFrames.append((t, grains, walls))
+        writeContactsVtu(os.path.join(exp.out, contacts))
+        self.vtkFrames.append((t, grains, walls, contacts))
         writePvd(os.path.join(exp.out, 'oedometer.pvd'), self.vtkFrames)
 
     # ------------------------------------------------------------------ at the end
     def finish(self, summary):
+        """Every output file from the rows, the engines' events and the scene now."""
         exp = self.exp
         if self.fd is None:
             self.open()
-        self.fd.flush()
+        self.fd.close()
+        self.fd = None
         out = exp.out
-        with open(os.path.join(out, 'checks.csv'), 'w') as fh:
-            fh.write(','.join(CHECK_COLUMNS) + '\n')
-            for row in self.checkRows:  # rows of states saved before maxCrushableRatio have 5 entries
-                t, it, n, ratio = row[:4]
-                fh.write('%.9g,%d,%d,%.9g,%.9g\n' % (t, it, n, ratio, row[5] if len(row) > 5 else float('nan')))
+        writeAtomic(os.path.join(out, 'fd.csv'), ','.join(FD_COLUMNS) + '\n' + ''.join(fdLine(r) for r in self.rows))
+        # rows of states saved before maxCrushableRatio have 5 entries
+        writeAtomic(os.path.join(out, 'checks.csv'), ','.join(CHECK_COLUMNS) + '\n' + ''.join(
+            '%.9g,%d,%d,%.9g,%.9g\n' % (tuple(row[:4]) + (row[5] if len(row) > 5 else float('nan'),))
+            for row in self.checkRows))
         events = exp.events()
-        with open(os.path.join(out, 'events.csv'), 'w', newline='') as fh:
-            w = csv.writer(fh)
-            w.writerow(EVENT_COLUMNS)
-            for e in events:
-                w.writerow([e['kind'], '%.17g' % (e['t'] - exp.loading.t0), e['iter'], e['id']] +
-                           ['%.17g' % v for v in e['pos']] + ['%.17g' % e[k] for k in ('radius', 'value', 'strength')] +
-                           [' '.join(str(i) for i in e.get('newIds', []))] +
-                           sum([['%.9g' % v for v in e[k]] if k in e else ['', ''] for k in ENERGY_KEYS], []))
+        buf = io.StringIO(newline='')
+        w = csv.writer(buf)
+        w.writerow(EVENT_COLUMNS)
+        for e in events:
+            w.writerow([e['kind'], '%.17g' % (e['t'] - exp.loading.t0), e['iter'], e['id']] +
+                       ['%.17g' % v for v in e['pos']] + ['%.17g' % e[k] for k in ('radius', 'value', 'strength')] +
+                       [' '.join(str(i) for i in e.get('newIds', []))] +
+                       sum([['%.9g' % v for v in e[k]] if k in e else ['', ''] for k in ENERGY_KEYS], []))
+        writeAtomic(os.path.join(out, 'events.csv'), buf.getvalue())
         table = self.grainTable()
-        with open(os.path.join(out, 'grains.csv'), 'w') as fh:
-            fh.write(','.join(GRAIN_COLUMNS) + '\n')
-            for k in range(len(table['id'])):
-                fh.write('%d,%.9g,%.9g,%.9g,%.9g,%.9g,%d,%d,%d,%.6g,%.6g\n' % tuple(table[c][k] for c in GRAIN_COLUMNS))
-        with open(os.path.join(out, 'summary.json'), 'w') as fh:
-            json.dump(summary, fh, indent=1)
+        writeAtomic(os.path.join(out, 'grains.csv'), ','.join(GRAIN_COLUMNS) + '\n' + ''.join(
+            '%d,%.9g,%.9g,%.9g,%.9g,%.9g,%d,%d,%d,%.6g,%.6g\n' % tuple(table[c][k] for c in GRAIN_COLUMNS)
+            for k in range(len(table['id']))))
         self.plot(exp, events)
         self.writeGrading(exp, summary)
         if len(self.cycleRows) > 1:
             self.plotCycles(exp)
-        self.fd.close()
-        self.fd = None
+        writeAtomic(os.path.join(out, 'summary.json'), json.dumps(summary, indent=1))  # last: the run's outputs are all there
 
     def plotCycles(self, exp):
         """cycles.png: permanent settlement and B_g against the number of cycles (log axis)."""
@@ -277,16 +291,13 @@ class Outputs:
         ax.set_title('%s: %d cycles between %g and %g kN at %g Hz' % (exp.runId, len(c), exp.p['Fmin'] / 1e3,
                                                                      exp.p['Fmax'] / 1e3, exp.p['f']), fontsize=9)
         fig.tight_layout()
-        fig.savefig(os.path.join(exp.out, 'cycles.png'), dpi=120)
-        plt.close(fig)
+        saveFigure(fig, os.path.join(exp.out, 'cycles.png'))
 
     def writeGrading(self, exp, summary):
         """psd.csv (sieve [mm], % passing before and after loading) and grading.png."""
         before, after = exp.grading()
-        with open(os.path.join(exp.out, 'psd.csv'), 'w') as fh:
-            fh.write('sieve_mm,passing_before,passing_after\n')
-            for a, b, c in zip(grading.SIEVES_MM, before, after):
-                fh.write('%g,%.6g,%.6g\n' % (a, b, c))
+        writeAtomic(os.path.join(exp.out, 'psd.csv'), 'sieve_mm,passing_before,passing_after\n' + ''.join(
+            '%g,%.6g,%.6g\n' % row for row in zip(grading.SIEVES_MM, before, after)))
         import matplotlib
         matplotlib.use('Agg')
         import matplotlib.pyplot as plt
@@ -304,8 +315,7 @@ class Outputs:
         ax.grid(alpha=0.3, which='both')
         ax.legend(fontsize=8)
         fig.tight_layout()
-        fig.savefig(os.path.join(exp.out, 'grading.png'), dpi=120)
-        plt.close(fig)
+        saveFigure(fig, os.path.join(exp.out, 'grading.png'))
 
     def plot(self, exp, events):
         import matplotlib
@@ -336,8 +346,11 @@ class Outputs:
         ax2.grid(alpha=0.3)
         ax2.legend(fontsize=8)
         fig.tight_layout()
-        fig.savefig(os.path.join(exp.out, 'fd.png'), dpi=120)
-        plt.close(fig)
+        saveFigure(fig, os.path.join(exp.out, 'fd.png'))
+
+
+def fdLine(row):
+    return '%.9g,%.9g,%.9g,%d,%d,%.9g\n' % tuple(row)
 
 
 # ---------------------------------------------------------------------------- VTK XML files
@@ -348,14 +361,15 @@ def _array(name, data, ncomp=1, kind='Float64'):
         kind, name, ncomp, body)
 
 
-def _unstructured(path, points, connectivity, offsets, types, pointData=''):
-    with open(path, 'w') as fh:
-        fh.write('<?xml version="1.0"?>\n<VTKFile type="UnstructuredGrid" version="0.1" byte_order="LittleEndian">\n'
-                 '<UnstructuredGrid>\n<Piece NumberOfPoints="%d" NumberOfCells="%d">\n' % (len(points), len(offsets)))
-        fh.write('<Points>\n' + _array('Points', points, 3) + '</Points>\n')
-        fh.write('<Cells>\n' + _array('connectivity', connectivity, 1, 'Int64') + _array('offsets', offsets, 1, 'Int64') +
-                 _array('types', types, 1, 'UInt8') + '</Cells>\n')
-        fh.write('<PointData>\n%s</PointData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n' % pointData)
+def _unstructured(path, points, connectivity, offsets, types, pointData='', cellData=''):
+    writeAtomic(path, ''.join([
+        '<?xml version="1.0"?>\n<VTKFile type="UnstructuredGrid" version="0.1" byte_order="LittleEndian">\n'
+        '<UnstructuredGrid>\n<Piece NumberOfPoints="%d" NumberOfCells="%d">\n' % (len(points), len(offsets)),
+        '<Points>\n' + _array('Points', points, 3) + '</Points>\n',
+        '<Cells>\n' + _array('connectivity', connectivity, 1, 'Int64') + _array('offsets', offsets, 1, 'Int64') +
+        _array('types', types, 1, 'UInt8') + '</Cells>\n',
+        '<PointData>\n%s</PointData>\n<CellData>\n%s</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n'
+        % (pointData, cellData)]))
 
 
 def writeGrainsVtu(path, table):
@@ -390,12 +404,35 @@ def writeWallsVtu(path, steelIds, plateZ, radius):
     _unstructured(path, np.array(pts), conn, offsets, types)
 
 
+def contactNetwork():
+    """The real contacts as a force network: (points (n, 2, 3) [m], id1, id2, Fn [N], uN [m]). A sphere-sphere
+    contact is the line between the two centres; one with a wall or a facet runs from the sphere's centre to
+    the contact point. Read in one pass (harvest.contacts), the few wall contacts' points after it."""
+    id1, id2, Fn, uN = harvest.contacts()
+    pos, sphere = np.zeros((len(O.bodies), 3)), np.zeros(len(O.bodies), dtype=bool)
+    for b in O.bodies:
+        if b is not None:
+            pos[b.id], sphere[b.id] = tuple(b.state.pos), isinstance(b.shape, Sphere)
+    points = np.stack([pos[id1], pos[id2]], axis=1) if len(id1) else np.zeros((0, 2, 3))
+    for k in np.flatnonzero(~(sphere[id1] & sphere[id2])):
+        a, b = int(id1[k]), int(id2[k])
+        c = tuple(O.interactions[a, b].geom.contactPoint)
+        points[k] = (pos[a], c) if sphere[a] else (c, pos[b])
+    return points, id1, id2, Fn, uN
+
+
+def writeContactsVtu(path):
+    """The contact force network: a line (VTK_LINE) per real contact with Fn, uN, id1, id2 as cell data
+    (ParaView: Tube, radius and colour by Fn)."""
+    points, id1, id2, Fn, uN = contactNetwork()
+    n = len(id1)
+    cells = (_array('Fn', Fn) + _array('uN', uN) + _array('id1', id1, 1, 'Int64') + _array('id2', id2, 1, 'Int64'))
+    _unstructured(path, points.reshape(-1, 3), np.arange(2 * n), np.arange(2, 2 * n + 1, 2), np.full(n, 3), '', cells)
+
+
 def writePvd(path, frames):
-    """ParaView's time series: each frame at its loading time [s]."""
-    with open(path + '.tmp', 'w') as fh:
-        fh.write('<?xml version="1.0"?>\n<VTKFile type="Collection" version="0.1">\n<Collection>\n')
-        for t, grains, walls in frames:
-            fh.write('<DataSet timestep="%.9g" part="0" file="%s"/>\n<DataSet timestep="%.9g" part="1" file="%s"/>\n' % (
-                t, grains, t, walls))
-        fh.write('</Collection>\n</VTKFile>\n')
-    os.replace(path + '.tmp', path)
+    """ParaView's time series: each frame at its loading time [s], a part per file of the frame (grains, walls,
+    contacts; frames of older states have no contacts)."""
+    writeAtomic(path, '<?xml version="1.0"?>\n<VTKFile type="Collection" version="0.1">\n<Collection>\n' + ''.join(
+        '<DataSet timestep="%.9g" part="%d" file="%s"/>\n' % (frame[0], part, name)
+        for frame in frames for part, name in enumerate(frame[1:])) + '</Collection>\n</VTKFile>\n')

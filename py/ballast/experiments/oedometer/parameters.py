@@ -8,11 +8,13 @@ Needs no YADE: the study runner reads it in plain Python.
 import hashlib
 import json
 import math
+import re
 
 from ... import _ballast
 from ...geometry import frictPhysStiffness
-from ...params import (ABRASION, CRUSH, INT32_MAX, NUMBER_NONNEGATIVE, NUMBER_POSITIVE, Param, Parameters, anyText,
-                       between, boolean, choice, flag, intAtLeast, intBetween, nonNegative, positive, positiveInt, text)
+from ...params import (ABRASION, CRUSH, INT32_MAX, NUMBER_NONNEGATIVE, NUMBER_POSITIVE, Param, ParamError, Parameters,
+                       anyText, between, boolean, choice, flag, intAtLeast, intBetween, literal, nonNegative, positive,
+                       positiveInt, text)
 from .loadcurve import halfLoadTime, peakTime
 
 OWNER = 'Oedometer'
@@ -143,10 +145,34 @@ MIN_STEPS_PER_CYCLE = 100   # [steps] a cycle resolved by fewer time steps is no
 MAX_OVERLAP_RATIO = 0.25    # [-] overlap / radius of the smallest grain if Fmax went through one of its steel contacts
 
 
+# Text (a command line, a table cell) is read in the spellings --help gives: a flag is 0 or 1; a number is
+# decimal (1e6, 0.5, 16); Python's other literal forms (0x10, 0o7, 0b1, 1_000, 1j) are refused.
+_PYTHON_ONLY_NUMBER = re.compile(r'^[-+]?(0[xXoObB]|\d[\d.]*_|.*\d[jJ]$)')
+
+
+def readText(name, value):
+    """A text value as the declaration of `name` reads it, in the documented spellings only (ParamError)."""
+    if not isinstance(value, str) or name not in PARAMS:
+        return value
+    p, t = PARAMS[name], value.strip().strip('\'"')
+    if p.parse is flag and t not in ('0', '1'):
+        raise ParamError(name, '%s: %s = %r is not allowed: expected 0 or 1' % (OWNER, name, value))
+    if p.parse is literal and _PYTHON_ONLY_NUMBER.match(value.strip()):
+        raise ParamError(name, '%s: %s = %r is not allowed: expected %s [%s], written in decimal (hexadecimal, octal, '
+                         'binary, complex and 1_000 forms are refused)' % (OWNER, name, value, p.allowed, p.unit))
+    return value
+
+
 class OedometerParameters(Parameters):
     """The oedometer's checked parameters (frozen) and what follows from them."""
 
     OWNER, PARAMS = OWNER, PARAMS
+
+    @classmethod
+    def check(cls, values, text=False):
+        if text and not isinstance(values, cls):
+            values = {k: readText(k, v) for k, v in dict(values).items()}
+        return super().check(values, text)
 
     @property
     def T(self):
@@ -209,6 +235,18 @@ class OedometerParameters(Parameters):
             bad('Fmin', 'must be smaller than Fmax = %g' % p['Fmax'])
         if p['prepYoung'] > p['young']:
             bad('prepYoung', 'must not exceed young = %g' % p['young'])
+        # periods: a crushing check in every load cycle; a frame or a state within the loading
+        T, loading = 1 / p['f'], p['cycles'] / p['f']
+        if p['Tc'] > T:
+            bad('Tc', 'longer than the load cycle 1/f = %g s: a cycle could pass without a crushing check (Tc <= 1/f; '
+                      '0 = every step)' % T)
+        if p['abrasionPeriod'] * dt > T:
+            bad('abrasionPeriod', '%d steps of %.3g s are longer than the load cycle 1/f = %g s (at most %d steps)' % (
+                p['abrasionPeriod'], dt, T, int(T / dt)))
+        for name in ('vtk', 'saveEvery'):
+            if p[name] > loading:
+                bad(name, 'longer than the loading, cycles/f = %g s: it would never fire (at most %g s; 0 = off)'
+                    % (loading, loading))
 
 
 def check(values, text=False):

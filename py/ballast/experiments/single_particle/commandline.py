@@ -2,7 +2,6 @@
 by name (or a yade-batch row), checked before any work. ``scripts/single_particle.py calibrate CSV``:
 ft0, m and the Weibull modulus fitted to measured strengths (plain python3; ``--confirm`` inside yade
 simulates the fitted model at the measured diameters and fits it again)."""
-import argparse
 import sys
 
 from ...params import ParamError
@@ -15,7 +14,7 @@ PROG = 'yade -n -x scripts/single_particle.py'
 
 
 def runParser():
-    ap = argparse.ArgumentParser(prog=PROG, allow_abbrev=False, description=(
+    ap = commandline.OneLineParser('single_particle.py', DECLARATION.params, prog=PROG, description=(
         'The single-particle crushing test: grains between platens until each first crushes, their '
         'strengths and Weibull statistics (docs/calibration.md). Every parameter can also be a yade-batch '
         'table column. To calibrate from measured strengths: scripts/single_particle.py calibrate CSV.'))
@@ -23,8 +22,8 @@ def runParser():
 
 
 def calibrateParser():
-    ap = argparse.ArgumentParser(prog='scripts/single_particle.py calibrate', allow_abbrev=False,
-                                 description=calibration.__doc__.split('\n\n')[0])
+    ap = commandline.OneLineParser('single_particle.py calibrate', {}, prog='scripts/single_particle.py calibrate',
+                                   description=calibration.__doc__.split('\n\n')[0])
     ap.add_argument('csv', help='measured strengths: a diameter column (diameter [m] or diameter_mm) and a force '
                                 'column (force [N] or force_kN), a row per grain')
     ap.add_argument('--criterion', default='vonMises', help="the model's criterion (default vonMises)")

@@ -133,6 +133,7 @@ class SingleParticle(Experiment):
             self.checkOutputs()
             self.dir.create()
             self.say('run %s -> %s' % (self.runId, self.out))
+            self.markRunning()
         self.newScene()
         ballast, steel = materials(p, p['young'])
         ip2, law2, _ = LAWS[p['law']]
@@ -180,6 +181,7 @@ class SingleParticle(Experiment):
         self.save(os.path.join(self.out, 'state-end.yade.gz'))
         s = self.summary()
         outputs.write(self, s)
+        self.markFinished(summary='summary.json')
         spread = ('F/d^2 %.3g-%.3g MPa' % (s['forceOverD2Min'] / 1e6, s['forceOverD2Max'] / 1e6) if s['nCrushed']
                   else 'none crushed by maxStrain')
         self.say('done: %d of %d grains crushed, %s; results in %s' % (s['nCrushed'], s['n'], spread, self.out))

@@ -10,6 +10,7 @@ import time
 import numpy as np
 import pandas as pd
 
+from ...study.files import saveFigure, writeAtomic
 from . import strengths
 
 STRENGTH_COLUMNS = ['grain', 'diameter', 'sizeClass', 'crushed', 'force', 'forceBottom', 'displacement',
@@ -66,15 +67,24 @@ def summary(exp):
     return out
 
 
+def finite(v):
+    """summary.json is strict JSON: an infinite modulus (no scatter) or a NaN is written as null."""
+    if isinstance(v, dict):
+        return {k: finite(x) for k, x in v.items()}
+    if isinstance(v, (list, tuple)):
+        return [finite(x) for x in v]
+    return None if isinstance(v, float) and not math.isfinite(v) else v
+
+
 def write(exp, summary):
+    """Every file written atomically (a killed test leaves whole files or none), summary.json last."""
     out = exp.out
     s = table(exp)
-    s.to_csv(os.path.join(out, 'strengths.csv'), index=False, float_format='%.9g')
-    pd.DataFrame(exp.tester.curves, columns=['grain', 'time', 'displacement', 'force']).to_csv(
-        os.path.join(out, 'curves.csv'), index=False, float_format='%.9g')
-    with open(os.path.join(out, 'summary.json'), 'w') as fh:
-        json.dump(summary, fh, indent=1, default=lambda v: list(v) if isinstance(v, tuple) else str(v))
+    writeAtomic(os.path.join(out, 'strengths.csv'), s.to_csv(index=False, float_format='%.9g'))
+    writeAtomic(os.path.join(out, 'curves.csv'), pd.DataFrame(
+        exp.tester.curves, columns=['grain', 'time', 'displacement', 'force']).to_csv(index=False, float_format='%.9g'))
     figures(exp, s, summary)
+    writeAtomic(os.path.join(out, 'summary.json'), json.dumps(finite(summary), indent=1))
 
 
 def figures(exp, s, summary):
@@ -103,8 +113,7 @@ def figures(exp, s, summary):
     ax.grid(alpha=0.3)
     ax.legend(fontsize=7)
     fig.tight_layout()
-    fig.savefig(os.path.join(exp.out, 'weibull.png'), dpi=120)
-    plt.close(fig)
+    saveFigure(fig, os.path.join(exp.out, 'weibull.png'))
     fig, ax = plt.subplots(figsize=(6, 4.5))
     ax.loglog(1e3 * c.diameter, c.forceOverD2 / 1e6, '.', color='0.6', label='each grain')
     fit = [cl for cl in summary['classes'] if cl['weibull']]
@@ -124,5 +133,4 @@ def figures(exp, s, summary):
     ax.grid(alpha=0.3, which='both')
     ax.legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(os.path.join(exp.out, 'size.png'), dpi=120)
-    plt.close(fig)
+    saveFigure(fig, os.path.join(exp.out, 'size.png'))
