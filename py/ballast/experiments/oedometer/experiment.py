@@ -65,6 +65,7 @@ class Oedometer(Experiment):
         self.rig = self.initial = self.probe = None
         self.loading = load
         self.maxProtrusion, self.nEscaped = 0.0, 0
+        self.stoppedBy = None        # why the last load() ended: 'cycles', 'stopAt', 'quiet' or 'force'
         Experiment.__init__(self, parameters, **params)
         if self.loading is None:
             self.loading = MODES[self.p['loadMode']]()
@@ -119,14 +120,41 @@ class Oedometer(Experiment):
         done = math.floor((O.time - t0 + 0.5 * O.dt) / self.T)
         total = done + cycles if cycles is not None else (p['cycles'] if done < p['cycles'] else done + 1)
         tStart, tEnd = O.time, t0 + total * self.T
+        self.stoppedBy = 'cycles'
         if p['stopAt'] > 0 and done == 0:  # an early stop, a step past the crushing check after stopAt T
-            tEnd = min(tEnd, t0 + p['stopAt'] * self.T + 1.5 * (p['Tc'] or O.dt))
-        self.runUntil(self.loading.done, tEnd=tEnd, phase='load', simSpan=tEnd - tStart, simStart=tStart,
+            stop = t0 + p['stopAt'] * self.T + 1.5 * (p['Tc'] or O.dt)
+            if stop < tEnd:
+                tEnd, self.stoppedBy = stop, 'stopAt'
+        self.runUntil(self.stopCondition(), tEnd=tEnd, phase='load', simSpan=tEnd - tStart, simStart=tStart,
                       extra=lambda: 'cycle %d/%d  F=%.0f kN  delta=%.1f mm  crushed %d  abraded %d' % (
                           min(math.floor((O.time - t0) / self.T) + 1, total), total,
                           self.loading.force() / 1e3, self.loading.delta() * 1e3, self.counter('crush', 'nCrushed'),
                           self.counter('abrasion', 'nAbraded')))
         return self.finish()
+
+    def stopCondition(self):
+        """The load phase's end test (checked every 200 steps): the displacement load has reached Fmax, or
+        (stopQuiet) after the peak of eq. 8 the applied load is below stopQuiet Fmax and no grain has
+        crushed for quietTime. Sets stoppedBy ('force', 'quiet'; summary.json says it)."""
+        p, t0 = self.p, self.loading.t0
+        last = {'n': self.counter('crush', 'nCrushed'), 't': O.time}
+
+        def done():
+            if self.loading.done():
+                self.stoppedBy = 'force'
+                return True
+            if p['stopQuiet'] <= 0:
+                return False
+            n = self.counter('crush', 'nCrushed')
+            if n != last['n']:
+                last['n'], last['t'] = n, O.time
+            t = O.time - t0
+            if (t > p.peakTime() and self.loading.target(t) < p['stopQuiet'] * p['Fmax']
+                    and O.time - last['t'] >= p['quietTime']):
+                self.stoppedBy = 'quiet'
+                return True
+            return False
+        return done
 
     def finish(self, atEnd=True):
         """The last row, the state at the end, every output file, run.json 'finished'; returns the summary.
@@ -290,6 +318,7 @@ class Oedometer(Experiment):
             'loadingStartTime': self.loading.t0,
             'forceErrorRms': float(np.sqrt(np.mean((a[loaded, 1] - target[loaded]) ** 2))) if loaded.any() else None,
             'dtFinal': O.dt,
+            'stoppedBy': self.stoppedBy,
             # the state at the end (the half-load sweep's columns when stopAt stops the loading early)
             'forceFinal': float(a[-1, 1]),
             'appliedFinal': float(a[-1, 5]),
@@ -323,7 +352,7 @@ class Oedometer(Experiment):
         """Everything the experiment needs to go on after O.load(): JSON-able."""
         return dict(self.baseState(), packing=runtime.ref(self.packing), loading=runtime.ref(self.loading),
                     outputs=runtime.ref(self.outputs), rig=runtime.ref(self.rig), initial=self.initial,
-                    maxProtrusion=self.maxProtrusion, nEscaped=self.nEscaped)
+                    maxProtrusion=self.maxProtrusion, nEscaped=self.nEscaped, stoppedBy=self.stoppedBy)
 
     @classmethod
     def fromState(cls, s, ref):
@@ -331,6 +360,7 @@ class Oedometer(Experiment):
         exp.setBaseState(s, ref)
         exp.packing, exp.loading, exp.outputs, exp.rig = (ref(s[k]) for k in ('packing', 'loading', 'outputs', 'rig'))
         exp.initial, exp.maxProtrusion, exp.nEscaped = s['initial'], s['maxProtrusion'], s['nEscaped']
+        exp.stoppedBy = s.get('stoppedBy')  # states saved before the stop conditions: unknown
         exp.probe = None
         return exp
 

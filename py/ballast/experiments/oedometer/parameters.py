@@ -73,7 +73,13 @@ PARAMS = {
     'cycles': Param(1, '-', 'load cycles of one load() (each of period 1/f)', positiveInt, 'an integer >= 1'),
     'stopAt': Param(0.0, '-', 'stop the first load() early, at stopAt load periods and 1.5 crushing periods (or time '
                     'steps, Tc = 0) more, so that the crushing check after it has run (0.25: eq. 8 at Fmax/2, the '
-                    'half-load sweep; 0: run the cycles)', between(0, 1), 'a number in [0, 1)'),
+                    'half-load sweep; 0.5: the applied peak, what Fig. 5 reads; 0: run the cycles)', between(0, 1),
+                    'a number in [0, 1)'),
+    'stopQuiet': Param(0.0, '-', 'also stop load() once, after the peak of eq. 8, the applied load has fallen below '
+                       'stopQuiet Fmax and no grain has crushed for quietTime (0: never)', between(0, 1),
+                       'a number in [0, 1)'),
+    'quietTime': Param(0.005, 's', 'stopQuiet: how long no grain may have crushed [s of loading time]', nonNegative,
+                       NUMBER_NONNEGATIVE),
     'Fmin': Param(0.0, 'N', 'lower force of the cycles after the first half-cycle (eq. 8 rises from 0 to Fmax; the '
                   'force then cycles between Fmax and Fmin, as a track between its seating load and a peak)',
                   nonNegative, NUMBER_NONNEGATIVE),
