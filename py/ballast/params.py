@@ -268,7 +268,7 @@ COMMON = {
     'mask': Param(0, '-', 'groupMask selecting the checked grains (dynamic spheres); 0 = all', intBetween(0, INT32_MAX),
                   'an integer in [0, 2^31 - 1] (a YADE groupMask)'),
     'adjustDt': Param(True, '-', 'after grains shrink, scale O.dt by the drop of utils.PWaveTimeStep() '
-                      '(eq. 5: dt_cr ~ r sqrt(rho/E)); skipped while a time stepper is active',
+                      '(eq. 5: dt_cr ~ r sqrt(rho/E)); with a time stepper active, until its next update',
                       boolean, 'True or False', flag),
 }
 

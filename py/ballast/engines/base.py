@@ -157,7 +157,9 @@ class BallastEngine(runtime.Runner):
             O.dt = O.dt * pw1 / pw0
 
     def _dtBefore(self):
-        return utils.PWaveTimeStep() if self.adjustDt and not O.dynDt else None
+        # with a time stepper (O.dynDt) too: the scaled step holds until the stepper's next update, which
+        # may be several steps after the replacement (GlobalStiffnessTimeStepper.timeStepUpdateInterval)
+        return utils.PWaveTimeStep() if self.adjustDt else None
 
 
 def docstring(cls, heading):

@@ -30,6 +30,7 @@ import os
 
 import numpy as np
 from yade import O
+from yade.wrapper import GlobalStiffnessTimeStepper
 
 from ... import grading, runtime
 from ...engines import BallastAbrasionEngine, BallastCrushEngine
@@ -39,6 +40,7 @@ from ...params import CRUSH, validate
 from ...study.files import writeAtomic
 from .. import grains
 from ..base import Experiment
+from . import scene
 from .loading import MODES
 from .outputs import Outputs
 from .packing import StoredPacking
@@ -46,6 +48,7 @@ from .parameters import OWNER, PARAMS, OedometerParameters
 from .probe import Probe, counter, degradingEngines, engine
 
 SAVER, CONTAINMENT = 'oedoSaver', 'oedoContainment'
+STIFFNESS_UPDATE = 10   # [steps] timeStep stiffness: between two updates of YADE's GlobalStiffnessTimeStepper
 
 
 @runtime.persistent('Oedometer')
@@ -192,6 +195,11 @@ class Oedometer(Experiment):
         p = self.p
         self.loading.start(p, self.rig)
         self.addEngines()
+        if p['timeStep'] == 'stiffness':  # from the contacts' stiffness (YADE), instead of eq. 5's P-wave step
+            scene.insertBeforeNewton([GlobalStiffnessTimeStepper(
+                timestepSafetyCoefficient=p['dtSafety'], timeStepUpdateInterval=STIFFNESS_UPDATE, defaultDt=O.dt,
+                label='timeStepper')])
+            O.dynDt = True
         x, r, m = grains.arrays()
         self.initial = {'massInitial': float(np.sum(m)), 'nGrainsInitial': len(r),
                         'volumeGrains': float(np.sum(sphereVolume(r))), 'radii': r.tolist(), 'masses': m.tolist()}

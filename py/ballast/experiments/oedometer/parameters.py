@@ -93,8 +93,14 @@ PARAMS = {
                   NUMBER_POSITIVE),
     'plateSpeed': Param(0.05, 'm/s', 'displacement mode: the plate speed', positive, NUMBER_POSITIVE),
     'damping': Param(0.2, '-', 'local (Cundall) damping while loading', between(0, 1), 'a number in [0, 1)'),
-    'dtSafety': Param(0.8, '-', 'time step = dtSafety * PWaveTimeStep() (eq. 5; conservative for Hertz contacts)',
-                      between(1e-9, 1, closedHi=True), 'a number in (0, 1]'),
+    'dtSafety': Param(0.8, '-', 'time step = dtSafety * PWaveTimeStep() (eq. 5; conservative for Hertz contacts); '
+                      'with timeStep stiffness the stepper\'s safety factor', between(1e-9, 1, closedHi=True),
+                      'a number in (0, 1]'),
+    'timeStep': Param('pwave', '-', "the loading's time step: 'pwave' (dtSafety x YADE's PWaveTimeStep of the smallest "
+                      "grain, eq. 5, scaled down after each replacement: the paper's) or 'stiffness' (YADE's "
+                      "GlobalStiffnessTimeStepper, safety dtSafety, from the contacts' stiffness every 10 "
+                      "steps; after a replacement scaled as for pwave until its next update)",
+                      choice('pwave', 'stiffness'), "'pwave' or 'stiffness'", text),
     # crushing (section 2) and abrasion (section 3): the engines' declarations
     'crush': Param(True, '-', 'BallastCrushEngine on', boolean, '0 or 1', flag),
     'ft0': CRUSH['ft0'].withDefault(3.1e6),  # calibrated: docs/oedometer.md, "Choice of the defaults"
