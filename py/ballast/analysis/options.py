@@ -1,0 +1,84 @@
+"""The fast options of issue 25 against the paper's settings (docs/performance.md, "Validation"): for
+each option, the runs of a study with it and the runs of a reference study with the paper's settings,
+matched by seed (the same stored packing, so the pairs differ by the option only): the response (delta
+at the applied peak of eq. 8, what Fig. 5 reads), the crushes, the share of realizations that
+avalanche, a paired and a two-sample test, the paired mean difference with its 95 % interval, and the
+CPU ratio per seed. Needs no YADE."""
+import math
+
+import numpy as np
+from scipy import stats
+
+from ..study.data import StudyRuns
+
+AVALANCHE = 0.005   # [m] delta at the applied peak above which a realization avalanched (docs/studies.md: quiet
+#                     realizations stay below 1 mm, avalanches settle 9-80 mm)
+
+
+def frame(path, **select):
+    """The finished runs of a study (or its records) whose parameters equal `select` ({name: value})."""
+    f = StudyRuns(path).frame()
+    for name, value in select.items():
+        col = f['params.' + name]
+        f = f[np.isclose(col.astype(float), value)] if isinstance(value, float) else f[col == value]
+    return f
+
+
+def compare(option, reference, response='deltaAtAppliedPeak'):
+    """The option's runs against the reference's, paired by seed (DataFrames of frame()): a dict with n (the
+    seeds both have), seeds, per side the mean response [m], the mean crushes and the share avalanching,
+    the paired differences' mean with its 95 % t interval and Cohen's d_z, Wilcoxon's signed-rank p (paired)
+    and Mann-Whitney's p (two-sample), the seeds that changed between quiet and avalanche, and the median
+    per-seed ratios option / reference of the CPU seconds and of the loading steps."""
+    a = option.set_index('params.seed')
+    b = reference.set_index('params.seed')
+    seeds = sorted(set(a.index) & set(b.index))
+    if len(seeds) < 2:
+        raise ValueError('compare: %d seed(s) in both studies; a comparison needs at least 2' % len(seeds))
+    x, y = a.loc[seeds, response].to_numpy(float), b.loc[seeds, response].to_numpy(float)
+    d = x - y
+    n = len(seeds)
+    sd = float(np.std(d, ddof=1))
+    half = float(stats.t.ppf(0.975, n - 1) * sd / math.sqrt(n))
+    same = bool(np.all(d == 0))
+    out = {'n': n, 'seeds': [int(s) for s in seeds], 'response': response,
+           'option': {'mean': float(np.mean(x)), 'crushes': float(a.loc[seeds, 'nCrushed'].mean()),
+                      'avalanching': float(np.mean(x > AVALANCHE))},
+           'reference': {'mean': float(np.mean(y)), 'crushes': float(b.loc[seeds, 'nCrushed'].mean()),
+                         'avalanching': float(np.mean(y > AVALANCHE))},
+           'meanDifference': float(np.mean(d)), 'meanDifferenceLow': float(np.mean(d) - half),
+           'meanDifferenceHigh': float(np.mean(d) + half),
+           'cohenDz': float(np.mean(d) / sd) if sd > 0 else 0.0,
+           'pWilcoxon': 1.0 if same else float(stats.wilcoxon(x, y).pvalue),
+           'pMannWhitney': float(stats.mannwhitneyu(x, y, alternative='two-sided').pvalue),
+           'changedClass': [int(s) for s, xi, yi in zip(seeds, x, y) if (xi > AVALANCHE) != (yi > AVALANCHE)],
+           'cpuRatioMedian': float(np.median(a.loc[seeds, 'cpuSeconds'].to_numpy(float) /
+                                             b.loc[seeds, 'cpuSeconds'].to_numpy(float)))}
+    if 'stepsByPhase.load' in a and 'stepsByPhase.load' in b:  # the machine-independent cost
+        out['loadStepsRatioMedian'] = float(np.median(a.loc[seeds, 'stepsByPhase.load'].to_numpy(float) /
+                                                      b.loc[seeds, 'stepsByPhase.load'].to_numpy(float)))
+    return out
+
+
+def figure(pairs, path):
+    """delta at the applied peak of each seed, the option against the paper's settings, one panel per
+    option (pairs: {option: (option frame, reference frame)}), with the 1:1 line."""
+    import matplotlib
+    matplotlib.use('Agg')
+    import matplotlib.pyplot as plt
+    from ..study.files import saveFigure
+    fig, axes = plt.subplots(1, len(pairs), figsize=(4.5 * len(pairs), 4.2), squeeze=False)
+    for ax, (name, (a, b)) in zip(axes[0], pairs.items()):
+        a, b = a.set_index('params.seed'), b.set_index('params.seed')
+        seeds = sorted(set(a.index) & set(b.index))
+        x, y = 1e3 * b.loc[seeds, 'deltaAtAppliedPeak'], 1e3 * a.loc[seeds, 'deltaAtAppliedPeak']
+        top = max(float(np.max(x)), float(np.max(y)), 1.0) * 1.05
+        ax.plot([0, top], [0, top], 'k--', lw=0.8)
+        ax.plot(x, y, 'o', ms=5)
+        ax.set_xlabel('paper\'s settings: $\\delta$ at the applied peak [mm]')
+        ax.set_ylabel('%s: $\\delta$ [mm]' % name)
+        ax.set_title('%s, %d seeds' % (name, len(seeds)), fontsize=9)
+        ax.grid(alpha=0.3)
+    fig.tight_layout()
+    saveFigure(fig, path)
+    return path

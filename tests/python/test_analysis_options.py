@@ -1,0 +1,43 @@
+"""ballast.analysis.options: an option's runs against the paper's settings paired by seed; the numbers
+worked out by hand from four made-up pairs."""
+import math
+
+import pandas as pd
+import pytest
+from scipy import stats
+
+from ballast.analysis import options
+
+
+def runs(seeds, delta, crushed, cpu):
+    return pd.DataFrame({'params.seed': seeds, 'deltaAtAppliedPeak': delta, 'nCrushed': crushed, 'cpuSeconds': cpu,
+                         'stepsByPhase.load': [1000 * c for c in cpu]})
+
+
+def test_paired_comparison_by_hand():
+    opt = runs([1, 2, 3, 4, 9], [0.050, 0.001, 0.040, 0.0003, 0.07], [150, 3, 140, 0, 160], [60, 30, 50, 20, 70])
+    ref = runs([4, 3, 2, 1], [0.0002, 0.004, 0.0008, 0.045], [0, 4, 2, 140], [40, 40, 60, 120])
+    c = options.compare(opt, ref)
+    assert c['n'] == 4 and c['seeds'] == [1, 2, 3, 4]           # seed 9 has no pair
+    d = [0.005, 0.0002, 0.036, 0.0001]                           # option - reference, seeds 1-4
+    mean = sum(d) / 4
+    sd = math.sqrt(sum((x - mean) ** 2 for x in d) / 3)
+    half = stats.t.ppf(0.975, 3) * sd / 2
+    assert c['meanDifference'] == pytest.approx(mean, rel=1e-12)
+    assert (c['meanDifferenceLow'], c['meanDifferenceHigh']) == pytest.approx((mean - half, mean + half), rel=1e-12)
+    assert c['cohenDz'] == pytest.approx(mean / sd, rel=1e-12)
+    assert c['option']['avalanching'] == 0.5 and c['reference']['avalanching'] == 0.25   # above 5 mm
+    assert c['changedClass'] == [3]                             # 4 mm quiet, 40 mm avalanche
+    assert c['option']['crushes'] == pytest.approx((150 + 3 + 140 + 0) / 4)
+    assert c['cpuRatioMedian'] == pytest.approx(0.5)           # ratios 60/120, 30/60, 50/40, 20/40
+    assert c['loadStepsRatioMedian'] == pytest.approx(0.5)
+    assert c['pWilcoxon'] == pytest.approx(0.125)               # all four differences positive: 2 / 2^4
+    assert 0 < c['pMannWhitney'] <= 1
+
+
+def test_identical_runs_and_too_few_pairs():
+    a = runs([1, 2, 3], [0.01, 0.02, 0.0001], [1, 2, 3], [1, 1, 1])
+    c = options.compare(a, a)
+    assert c['meanDifference'] == 0 and c['pWilcoxon'] == 1.0 and c['cpuRatioMedian'] == 1.0
+    with pytest.raises(ValueError, match='1 seed.s. in both studies'):
+        options.compare(runs([1], [0.1], [1], [1]), a)
