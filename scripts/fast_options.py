@@ -40,11 +40,11 @@ def main(argv=None):
         json.dump(result, fh, indent=1)
     for name, r in result.items():
         print('%-9s %2d seeds: delta %.1f mm (paper %.1f), difference %.1f mm [%.1f, %.1f], Wilcoxon p = %.3g, '
-              'avalanching %.0f %% (paper %.0f %%), changed %s, CPU x%.2f' % (
+              'avalanching %.0f %% (paper %.0f %%), changed %s, CPU x%.2f, loading steps x%.2f' % (
                   name, r['n'], 1e3 * r['option']['mean'], 1e3 * r['reference']['mean'], 1e3 * r['meanDifference'],
                   1e3 * r['meanDifferenceLow'], 1e3 * r['meanDifferenceHigh'], r['pWilcoxon'],
                   100 * r['option']['avalanching'], 100 * r['reference']['avalanching'], r['changedClass'] or 'none',
-                  r['cpuRatioMedian']))
+                  r['cpuRatioMedian'], r.get('loadStepsRatioMedian', float('nan'))))
     print(options.figure(pairs, os.path.join(a.out, 'options.png')))
     return 0
 
