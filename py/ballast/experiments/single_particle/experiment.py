@@ -179,8 +179,9 @@ class SingleParticle(Experiment):
                       simStart=O.time, extra=lambda: '%d of %d grains done' % (
                           sum(r is not None for r in tester.result), len(tester.result)))
         self.save(os.path.join(self.out, 'state-end.yade.gz'))
-        s = self.summary()
-        outputs.write(self, s)
+        t = self.table()
+        s = outputs.summary(self, t)
+        outputs.write(self, s, t)
         self.markFinished(summary='summary.json')
         spread = ('F/d^2 %.3g-%.3g MPa' % (s['forceOverD2Min'] / 1e6, s['forceOverD2Max'] / 1e6) if s['nCrushed']
                   else 'none crushed by maxStrain')

@@ -30,12 +30,12 @@ def table(exp):
     return pd.DataFrame(rows, columns=STRENGTH_COLUMNS)
 
 
-def summary(exp):
+def summary(exp, s=None):
     """Counts, the quasi-static check, the Weibull fit of F/d^2 per size class, the size law fitted to every
     grain (of F/d^2, and of the criterion's stress: that one recovers ft0, m and the Weibull modulus), the
     closed-form check of a deterministic strength, the cost and every parameter."""
     p = exp.p
-    s = table(exp)
+    s = table(exp) if s is None else s
     c = s[s.crushed]
     wall, cpu = exp.seconds()
     lo, hi = min(s.diameter.min(), p['dMin']), max(s.diameter.max(), p['dMax'])
@@ -76,10 +76,10 @@ def finite(v):
     return None if isinstance(v, float) and not math.isfinite(v) else v
 
 
-def write(exp, summary):
-    """Every file written atomically (a killed test leaves whole files or none), summary.json last."""
+def write(exp, summary, s):
+    """Every file written atomically (a killed test leaves whole files or none), summary.json last; s: the
+    strengths table the summary was made from (table)."""
     out = exp.out
-    s = table(exp)
     writeAtomic(os.path.join(out, 'strengths.csv'), s.to_csv(index=False, float_format='%.9g'))
     writeAtomic(os.path.join(out, 'curves.csv'), pd.DataFrame(
         exp.tester.curves, columns=['grain', 'time', 'displacement', 'force']).to_csv(index=False, float_format='%.9g'))
