@@ -13,8 +13,8 @@ from ..names import fmtTime
 @runtime.persistent('Phases')
 class Phases:
     """Runs O in chunks until a phase ends. Where a phase ends never depends on the machine's speed:
-    the end test `done()` runs in a PyRunner every checkEvery steps, which pauses O, so a seed always
-    gives the same packing and the same run."""
+    the end test `done()` runs in a PyRunner every checkEvery steps, which ends the run after the step it
+    is in, so a seed always gives the same packing and the same run."""
 
     CHUNK_WALL = 2.0  # [s] wall time of a chunk of O.run(n, True) (each costs ~40 ms of overhead)
     LABEL = 'phaseEnd'
@@ -30,10 +30,13 @@ class Phases:
         print('[%s %7.1fs] %s' % (self.name, time.time() - self.started, msg), flush=True)
 
     def check(self):
-        """The PyRunner's call: pause O once the phase is done."""
+        """The PyRunner's call: end the run after this step once the phase is done. Not O.pause(): it lets
+        O.run(n, True) return while the step is still running its later engines, and the worker thread
+        then goes on stepping when the next O.run starts before it has looked (a step too many under load).
+        A stop iteration ends the loop in the worker itself, once the step is whole."""
         if self.done is not None and self.done():
             self.finished = True
-            O.pause()
+            O.stopAtIter = O.iter + 1
 
     def run(self, phase, done=None, tEnd=None, simSpan=None, simStart=None, extra=None, checkEvery=200,
             afterChunk=None):
