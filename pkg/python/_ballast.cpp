@@ -17,6 +17,8 @@ namespace binding {
 	void registerFragmentPattern();
 	void registerInputCheck();
 	void registerTypes();
+	void registerDensityScaling();
+	void registerInertialNumber();
 }  // namespace binding
 }  // namespace ballast
 
@@ -38,4 +40,6 @@ BOOST_PYTHON_MODULE(_ballast)
 	registerFragmentPattern();
 	registerInputCheck();
 	registerTypes();
+	registerDensityScaling();
+	registerInertialNumber();
 }

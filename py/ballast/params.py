@@ -270,6 +270,10 @@ COMMON = {
     'adjustDt': Param(True, '-', 'after grains shrink, scale O.dt by the drop of utils.PWaveTimeStep() '
                       '(eq. 5: dt_cr ~ r sqrt(rho/E)); with a time stepper active, until its next update',
                       boolean, 'True or False', flag),
+    'scaledPWaveStep': Param(0.0, 's', 'density scaling: every grain the engine creates, shrinks or grows gets the '
+                             "YADE State.densityScaling that makes its own P-wave step r sqrt(rho/E) this long (needs "
+                             'NewtonIntegrator.densityScaling); O.dt is then not scaled (adjustDt has no effect); '
+                             '0 = no density scaling', nonNegative, NUMBER_NONNEGATIVE),
 }
 
 # PyRunner's (YADE PeriodicEngine's) own settings, checked as the engines' parameters are: a negative or

@@ -156,8 +156,12 @@ def document():
 
 
 def flush():
-    """The live objects' state into O.tags[TAG] (called before every save)."""
+    """The live objects' state into O.tags[TAG] (called before every save); first each object's optional
+    beforeSave(), for what the scene must hold when it is saved."""
     if _scene is not None:
+        for obj in list(_scene.objects.values()):
+            if hasattr(obj, 'beforeSave'):
+                obj.beforeSave()
         O.tags[TAG] = json.dumps(document())
 
 

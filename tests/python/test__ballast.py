@@ -25,6 +25,8 @@ BY_FILE = {
     'FragmentPattern': {'fragmentPattern', 'keptVolumeFraction', 'patternName', 'randomRotation', 'placeFragments'},
     'InputCheck': {'parameterRanges'},
     'Types': {'matricesToArray', '_fastMatrixPath'},
+    'DensityScaling': {'pWaveStep', 'densityScaling'},
+    'InertialNumber': {'inertialNumber'},
 }
 
 

@@ -317,6 +317,23 @@ def hertzPressureFromForce(g):
     return kw, elementwiseCheck(kw, hertzFromForceRef)
 
 
+def pWaveStep(g):
+    kw = broadcastArguments(g, ['r', 'density', 'young'], lambda k, n: g.magnitude(n))
+    return kw, elementwiseCheck(kw, lambda r, rho, E: r * np.sqrt(rho / E))
+
+
+def densityScaling(g):
+    kw = broadcastArguments(g, ['ownStep', 'targetStep'],
+                            lambda k, n: np.where(g.rng.random(n) < 0.2, 0.0, g.magnitude(n)) if k == 'targetStep'
+                            else g.magnitude(n))
+    return kw, elementwiseCheck(kw, lambda own, t: np.where((t == 0) | (own >= t), 1.0, (own / np.where(t == 0, 1, t)) ** 2))
+
+
+def inertialNumber(g):
+    kw = broadcastArguments(g, ['rate', 'd', 'density', 'pressure'], lambda k, n: g.signed(n) if k == 'rate' else g.magnitude(n))
+    return kw, elementwiseCheck(kw, lambda rate, d, rho, p: np.abs(rate) * d * np.sqrt(rho / p))
+
+
 def majorPrincipalRef(S):
     """The largest principal compressive stress of eq. 3 (compression negative): -lambda_min, 0 if none."""
     return np.maximum(0.0, -np.linalg.eigvalsh(symmetricPart(S))[..., 0])
@@ -552,7 +569,8 @@ FUNCTIONS = {'fabricStress': fabricStress, 'grainStresses': grainStresses, 'vonM
              'weibullFactors': weibullFactors,
              'abrasionBound': abrasionBound, 'sphereContactBound': sphereContactBound, 'fragmentPattern': fragmentPattern,
              'keptVolumeFraction': keptVolumeFraction, 'patternName': patternName, 'randomRotation': randomRotation,
-             'placeFragments': placeFragments, 'matricesToArray': matricesToArray, '_fastMatrixPath': fastMatrixPath}
+             'placeFragments': placeFragments, 'matricesToArray': matricesToArray, '_fastMatrixPath': fastMatrixPath,
+             'pWaveStep': pWaveStep, 'densityScaling': densityScaling, 'inertialNumber': inertialNumber}
 
 
 # functions without arguments: nothing to fuzz (tests/python/test__ballast_InputCheck.py, _CrushCriterion.py)

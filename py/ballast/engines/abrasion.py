@@ -67,7 +67,7 @@ class BallastAbrasionEngine(BallastEngine):
             d['massLost'] += mass - newMass
             self._event('abrasion', bid, pos, r, float(p0[k]), self.strength, [])
         tab.commit()
-        self._adjustDt(pw0)
+        self._adjustDt(pw0, ids[hit])
         return True
 
 

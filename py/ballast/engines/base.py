@@ -15,6 +15,7 @@ from yade import O, utils
 from yade.wrapper import PyRunner
 
 from .. import contacts, harvest, runtime
+from ..densityscaling import scaleDensities
 from ..params import PERIODIC, ParamError, validate, validateAll
 
 PERIODS = ('iterPeriod', 'virtPeriod', 'realPeriod')
@@ -148,8 +149,11 @@ class BallastEngine(runtime.Runner):
                                          'pos': [pos[0], pos[1], pos[2]], 'radius': r, 'value': value,
                                          'strength': strength, 'newIds': newIds})
 
-    def _adjustDt(self, pw0):
-        """Eq. 5: the critical step scales with the smallest radius; keep O.dt's safety margin."""
+    def _adjustDt(self, pw0, changed):
+        """After grains changed (ids `changed`): with density scaling their densityScaling (their own P-wave
+        step reaches scaledPWaveStep, O.dt stays); else eq. 5: the critical step scales with the smallest
+        radius, so O.dt keeps its safety margin."""
+        scaleDensities(changed, self.scaledPWaveStep)
         if pw0 is None:
             return
         pw1 = utils.PWaveTimeStep()
@@ -159,7 +163,7 @@ class BallastEngine(runtime.Runner):
     def _dtBefore(self):
         # with a time stepper (O.dynDt) too: the scaled step holds until the stepper's next update, which
         # may be several steps after the replacement (GlobalStiffnessTimeStepper.timeStepUpdateInterval)
-        return utils.PWaveTimeStep() if self.adjustDt else None
+        return utils.PWaveTimeStep() if self.adjustDt and self.scaledPWaveStep == 0 else None
 
 
 def docstring(cls, heading):

@@ -90,14 +90,16 @@ class BallastCrushEngine(BallastEngine):
             hit = hit[np.argsort(-(se[hit] / strength[hit]), kind='stable')[:self.maxPerCheck]]
         if len(hit):
             pw0 = self._dtBefore()
+            fragments = []
             for k in hit:
                 if se[k] <= ft[k]:
                     d['nFatigueCrushed'] += 1
                 newIds = self._replace(tab, int(ids[k]), float(radii[k]), float(se[k]), float(strength[k]))
                 if self.fatigue:  # fragments start undamaged (docs/fatigue.md)
                     d['_fatigue'].fresh(newIds)
+                fragments += newIds
             tab.commit()
-            self._adjustDt(pw0)
+            self._adjustDt(pw0, fragments)
             changed = True
         return d['_replacements'].grow(tab, self.growTime, d) or changed
 

@@ -4,6 +4,7 @@ keep='volume' the growth of the fragments back to the parent's volume over growT
 from yade import O, Vector3
 
 from .. import energy
+from ..densityscaling import scaleDensities
 from ..geometry import sphereVolume
 from .base import resizeGrain
 
@@ -57,6 +58,7 @@ class Replacements:
                 r, mass, newMass = resizeGrain(tab, b.id, f)  # the density stays: mass x f^3
                 ledger['volumeLost'] -= sphereVolume(r) * (f ** 3 - 1)
                 ledger['massLost'] -= newMass - mass
+            scaleDensities([b.id for b in alive], ledger['scaledPWaveStep'])  # larger: less scaling needed
             g['grown'] = want
             if frac < 1:
                 still.append(g)

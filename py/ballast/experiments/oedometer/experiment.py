@@ -30,9 +30,10 @@ import os
 
 import numpy as np
 from yade import O
-from yade.wrapper import GlobalStiffnessTimeStepper
+from yade.wrapper import GlobalStiffnessTimeStepper, NewtonIntegrator
 
-from ... import grading, runtime
+from ... import _ballast, grading, harvest, runtime
+from ...densityscaling import scaleDensities
 from ...engines import BallastAbrasionEngine, BallastCrushEngine
 from ...geometry import sphereVolume
 from ...names import fmtTime
@@ -48,7 +49,25 @@ from .parameters import OWNER, PARAMS, OedometerParameters
 from .probe import Probe, counter, degradingEngines, engine
 
 SAVER, CONTAINMENT = 'oedoSaver', 'oedoContainment'
+PLATE_STIFFNESS_MARGIN = 2.0  # [-] densityStep: the plate's contacts may stiffen this much as grains crush under it
+DENSITY_GUARD, DENSITY_SWITCH = 'densityScalingGuard', 'densityScalingSwitch'
 STIFFNESS_UPDATE = 10   # [steps] timeStep stiffness: between two updates of YADE's GlobalStiffnessTimeStepper
+
+
+def guard(label):
+    """The engine with this label in O.engines, or None."""
+    return next((e for e in O.engines if e.label == label), None)
+
+
+def enableDensityScaling():
+    """NewtonIntegrator.densityScaling on. YADE 2023.02a's setter only switches it on when it finds a
+    GlobalStiffnessTimeStepper among the scene's current engines (and one running with densityScaling
+    aborts on the Box plate): one stays in O.engines, dead and inactive, for the setter. It then works
+    inside a step too, where a new O.engines takes effect only at the next one."""
+    if guard(DENSITY_SWITCH) is None:
+        O.engines = O.engines + [GlobalStiffnessTimeStepper(dead=True, active=False, label=DENSITY_SWITCH)]
+    next(e for e in O.engines if isinstance(e, NewtonIntegrator)).densityScaling = True
+    guard(DENSITY_SWITCH).densityScaling = False  # the setter switched the stepper's on too
 
 
 @runtime.persistent('Oedometer')
@@ -132,7 +151,7 @@ class Oedometer(Experiment):
                       extra=lambda: 'cycle %d/%d  F=%.0f kN  delta=%.1f mm  crushed %d  abraded %d' % (
                           min(math.floor((O.time - t0) / self.T) + 1, total), total,
                           self.loading.force() / 1e3, self.loading.delta() * 1e3, self.counter('crush', 'nCrushed'),
-                          self.counter('abrasion', 'nAbraded')))
+                          self.counter('abrasion', 'nAbraded')) + self.outputs.inertialInfo())
         return self.finish()
 
     def stopCondition(self):
@@ -200,6 +219,8 @@ class Oedometer(Experiment):
                 timestepSafetyCoefficient=p['dtSafety'], timeStepUpdateInterval=STIFFNESS_UPDATE, defaultDt=O.dt,
                 label='timeStepper')])
             O.dynDt = True
+        if p['densityStep'] > 0:
+            self.scaleDensities()
         x, r, m = grains.arrays()
         self.initial = {'massInitial': float(np.sum(m)), 'nGrainsInitial': len(r),
                         'volumeGrains': float(np.sum(sphereVolume(r))), 'radii': r.tolist(), 'masses': m.tolist()}
@@ -218,6 +239,37 @@ class Oedometer(Experiment):
                                                             self.porosity0(), p['Fmax'], p['f'], O.dt))
         self.save(os.path.join(self.out, 'state-start.yade.gz'))
 
+    def scaleDensities(self):
+        """Density scaling from the start of loading (docs/performance.md): O.dt = densityStep, Newton's
+        densityScaling on, every grain's own P-wave step densityStep / dtSafety (the engines scale the grains
+        they change), and the plate, if it moves, from the stiffness of its contacts: a body of mass M on
+        springs K is stable below 2 sqrt(M / K); taken as sqrt(M / (PLATE_STIFFNESS_MARGIN K)), as more
+        contacts form under it when grains crush."""
+        p = self.p
+        O.dt = p['densityStep']
+        enableDensityScaling()
+        O.engines = [runtime.callback(self, 'densityGuard', iterPeriod=1, dead=True, label=DENSITY_GUARD)] + list(O.engines)
+        scaleDensities(harvest.grains().ids, p.scaledPWaveStep())
+        plate = O.bodies[self.loading.plate]
+        K = sum(i.phys.kn for i in plate.intrs() if i.isReal)
+        # every body Newton moves needs a factor: YADE's default, -1, would turn its accelerations around
+        plate.state.densityScaling = 1.0
+        if plate.dynamic and K > 0:
+            own = math.sqrt(plate.state.mass / (PLATE_STIFFNESS_MARGIN * K))
+            plate.state.densityScaling = float(_ballast.densityScaling(own, p.scaledPWaveStep()))
+
+    def densityGuard(self):
+        """YADE does not save NewtonIntegrator.densityScaling: a scene saved with density scaling holds this
+        callback alive, first in the chain, so that the first step after O.load runs it, and with it the
+        runtime's restore (restored() switches the flag on again) before Newton moves anything; then it
+        sleeps until the next save."""
+        guard(DENSITY_GUARD).dead = True
+
+    def beforeSave(self):
+        """The runtime's call before O.save: the density guard awake in the saved scene."""
+        if guard(DENSITY_GUARD) is not None:
+            guard(DENSITY_GUARD).dead = False
+
     def addEngines(self):
         """BallastCrushEngine and BallastAbrasionEngine after NewtonIntegrator, as the parameters say."""
         p = self.p
@@ -226,14 +278,16 @@ class Oedometer(Experiment):
             # every engine parameter the experiment declares (parameters.PARAMS reuses CRUSH's declarations);
             # the engine scales O.dt with the drop of PWaveTimeStep() after a replacement (eq. 5)
             own = {k: p[k] for k in CRUSH if k in p}
-            crush = BallastCrushEngine(mask=0, label='crush', **p.crushPeriod(), **own)
+            crush = BallastCrushEngine(mask=0, label='crush', scaledPWaveStep=p.scaledPWaveStep(), **p.crushPeriod(),
+                                       **own)
             # checks at loading times k T_c (not at scene times, which include the preparation): where they fall
             # in the load cycle is then set by T_c and f alone (docs/oedometer.md, "Crushing period")
             crush.virtLast = self.loading.t0
             extra.append(crush)
         if p['abrasion']:
             extra.append(BallastAbrasionEngine(strength=p['strength'], gamma=p['gamma'], rMin=p['rMin'], mask=0,
-                                               iterPeriod=p['abrasionPeriod'], label='abrasion'))
+                                               iterPeriod=p['abrasionPeriod'], scaledPWaveStep=p.scaledPWaveStep(),
+                                               label='abrasion'))
         O.engines = O.engines + extra
 
     def checkpoint(self):
@@ -327,6 +381,8 @@ class Oedometer(Experiment):
             'forceErrorRms': float(np.sqrt(np.mean((a[loaded, 1] - target[loaded]) ** 2))) if loaded.any() else None,
             'dtFinal': O.dt,
             'stoppedBy': self.stoppedBy,
+            'inertialNumber': self.outputs.inertialSummary([e['t'] - self.loading.t0 for e in self.events()
+                                                            if e['kind'] == 'crush']),
             # the state at the end (the half-load sweep's columns when stopAt stops the loading early)
             'forceFinal': float(a[-1, 1]),
             'appliedFinal': float(a[-1, 5]),
@@ -373,8 +429,11 @@ class Oedometer(Experiment):
         return exp
 
     def restored(self):
-        """After the runtime rebuilt the scene's objects: the pieces read this run again."""
+        """After the runtime rebuilt the scene's objects: the pieces read this run again, and Newton scales
+        densities again if the run does (YADE's O.load leaves it off)."""
         self.loading.bind(self.p)
+        if self.p['densityStep'] > 0 and self.initial is not None:
+            enableDensityScaling()
         if self.initial is not None:
             self.probe = Probe(self.p, self.loading, self.rig, self.dir, self.initial)
             self.outputs.bind(self.probe)

@@ -9,6 +9,7 @@ loading (a live log, flushed by the OS) and written again atomically from the ro
 import csv
 import io
 import json
+import math
 import os
 
 import numpy as np
@@ -19,7 +20,8 @@ from ... import _ballast, grading, harvest, runtime
 from ...study.files import saveFigure, writeAtomic
 
 FD_COLUMNS = ('t', 'F', 'delta', 'nCrushed', 'nAbraded', 'Fapplied')
-CHECK_COLUMNS = ('t', 'iter', 'nCrushed', 'maxStressRatio', 'maxCrushableRatio')
+CHECK_COLUMNS = ('t', 'iter', 'nCrushed', 'maxStressRatio', 'maxCrushableRatio', 'inertialNumber')
+INERTIAL_BOUND = 1e-3  # [-] the quasi-static regime's inertial number (GDR MiDi 2004): above it a run warns
 CYCLE_COLUMNS = ('cycle', 't', 'settlement', 'resilient', 'nCrushed', 'nAbraded', 'Bg', 'maxDamage')
 EVENT_COLUMNS = ('kind', 't', 'iter', 'id', 'x', 'y', 'z', 'radius', 'value', 'strength', 'newIds', 'EkBefore',
                  'EeBefore', 'EkAfter', 'EeAfter', 'EkGrown', 'EeGrown')
@@ -197,7 +199,32 @@ class Outputs:
             return
         before = self.checkRows[-1][4] if self.checkRows else 0
         self.checkRows.append((O.time - self.exp.loading.t0, O.iter, crush.nCrushed - before, crush.maxStressRatio,
-                               crush.nCrushed, crush.maxCrushableRatio))
+                               crush.nCrushed, crush.maxCrushableRatio, self.exp.inertialNumber()))
+
+    def inertialInfo(self):
+        """The progress lines' word on the inertial number: the last check's, and a warning once any passed
+        INERTIAL_BOUND."""
+        seen = [row[6] for row in self.checkRows if len(row) > 6 and math.isfinite(row[6])]
+        if not seen:
+            return ''
+        worst = max(seen)
+        return '  I=%.1e%s' % (seen[-1], '' if worst <= INERTIAL_BOUND else
+                               ' (max %.1e > %g: not quasi-static)' % (worst, INERTIAL_BOUND))
+
+    def inertialSummary(self, crushTimes):
+        """summary.json's inertialNumber: the largest I at the checks before the first crush, from the first
+        to the last crush, and after it (loading times; None where no check fell), and whether any passed
+        INERTIAL_BOUND."""
+        rows = [(row[0], row[6]) for row in self.checkRows if len(row) > 6 and math.isfinite(row[6])]
+        t1, t2 = (min(crushTimes), max(crushTimes)) if len(crushTimes) else (math.inf, math.inf)
+
+        def largest(keep):
+            v = [I for t, I in rows if keep(t)]
+            return max(v) if v else None
+        out = {'bound': INERTIAL_BOUND, 'maxBeforeCrushing': largest(lambda t: t < t1),
+               'maxCrushing': largest(lambda t: t1 <= t <= t2), 'maxAfterCrushing': largest(lambda t: t > t2)}
+        out['exceeded'] = any(I > INERTIAL_BOUND for _, I in rows)
+        return out
 
     # ------------------------------------------------------------------ per-grain state
     def grainTable(self):
@@ -250,9 +277,11 @@ class Outputs:
         self.fd = None
         out = exp.out
         writeAtomic(os.path.join(out, 'fd.csv'), ','.join(FD_COLUMNS) + '\n' + ''.join(fdLine(r) for r in self.rows))
-        # rows of states saved before maxCrushableRatio have 5 entries
+        # rows of states saved before maxCrushableRatio have 5 entries, before inertialNumber 6
+        nan = float('nan')
         writeAtomic(os.path.join(out, 'checks.csv'), ','.join(CHECK_COLUMNS) + '\n' + ''.join(
-            '%.9g,%d,%d,%.9g,%.9g\n' % (tuple(row[:4]) + (row[5] if len(row) > 5 else float('nan'),))
+            '%.9g,%d,%d,%.9g,%.9g,%.6g\n' % (tuple(row[:4]) + (row[5] if len(row) > 5 else nan,
+                                                                row[6] if len(row) > 6 else nan))
             for row in self.checkRows))
         events = exp.events()
         buf = io.StringIO(newline='')

@@ -101,6 +101,11 @@ PARAMS = {
                       "GlobalStiffnessTimeStepper, safety dtSafety, from the contacts' stiffness every 10 "
                       "steps; after a replacement scaled as for pwave until its next update)",
                       choice('pwave', 'stiffness'), "'pwave' or 'stiffness'", text),
+    'densityStep': Param(0.0, 's', "density scaling: the loading's time step; every grain, fragments included, "
+                         "gets YADE's State.densityScaling so that its own P-wave step r sqrt(rho/E) reaches "
+                         'densityStep / dtSafety (never made lighter), the plate from the stiffness of its contacts; '
+                         "0 = off (the paper's). At least the paper's step, with timeStep pwave", nonNegative,
+                         NUMBER_NONNEGATIVE),
     # crushing (section 2) and abrasion (section 3): the engines' declarations
     'crush': Param(True, '-', 'BallastCrushEngine on', boolean, '0 or 1', flag),
     'ft0': CRUSH['ft0'].withDefault(3.1e6),  # calibrated: docs/oedometer.md, "Choice of the defaults"
@@ -208,6 +213,14 @@ class OedometerParameters(Parameters):
         smallest grain, r sqrt(rho / E)."""
         return self['dtSafety'] * self['dMin'] / 2 * math.sqrt(self['density'] / self['young'])
 
+    def loadingTimeStep(self):
+        """The loading time step [s] at the start: densityStep with density scaling, else startTimeStep()."""
+        return self['densityStep'] or self.startTimeStep()
+
+    def scaledPWaveStep(self):
+        """The own P-wave step [s] density scaling gives every grain, densityStep / dtSafety (0: off)."""
+        return self['densityStep'] / self['dtSafety']
+
     def singleContactOverlap(self, force):
         """Overlap [m] of the smallest grain (r = dMin/2) carrying `force` [N] through one contact with steel,
         with YADE's stiffness of that contact: linear kn = 2 E r Es r / (E r + Es r), Hertz F = kno u^1.5 with
@@ -221,10 +234,18 @@ class OedometerParameters(Parameters):
     def crossCheck(self):
         """Checks between parameters; each error names the parameter at fault."""
         p, bad = self, self.bad
-        dt = self.startTimeStep()
+        dt = self.loadingTimeStep()
+        if p['densityStep'] > 0:
+            if p['timeStep'] != 'pwave':
+                bad('densityStep', "%g s with timeStep = %r: density scaling sets the step itself; give timeStep "
+                                   "'pwave' or densityStep 0" % (p['densityStep'], p['timeStep']))
+            if p['densityStep'] < self.startTimeStep():
+                bad('densityStep', "%g s is below the paper's step %.3g s (dtSafety PWaveTimeStep of the smallest grain): "
+                                   'nothing would be scaled; give 0 (off) or at least %.3g s' % (
+                                       p['densityStep'], self.startTimeStep(), self.startTimeStep()))
         steps = p['cycles'] / p['f'] / dt
         if steps > MAX_LOADING_STEPS:
-            bad('f', '%d cycles at %g Hz take %.3g time steps of %.3g s (dtSafety PWaveTimeStep of the smallest grain), '
+            bad('f', '%d cycles at %g Hz take %.3g time steps of %.3g s (the loading time step), '
                      'more than the %.0e a run may take: raise f or lower cycles' % (p['cycles'], p['f'], steps, dt,
                                                                                       MAX_LOADING_STEPS))
         if 1 / p['f'] / dt < MIN_STEPS_PER_CYCLE:

@@ -1,12 +1,17 @@
 """What the outputs read of a running oedometer, and nothing more: the parameters, the plate (the
 grains' force on it, its displacement, the applied force of eq. 8), the cylinder, the engines' counters
-and events, the grading against the start of loading, and the run directory."""
+and events, the grading against the start of loading, the inertial number, and the run directory."""
+import math
+
 import numpy as np
 from yade import O
 
-from ... import grading
+from ... import _ballast, grading, harvest
+from ...densityscaling import scaledDensity
 from ...engines import BallastEngine
 from .. import grains
+
+LOADED = 0.01  # [-] the inertial number is reported once the grains carry this share of Fmax
 
 
 def engine(label):
@@ -59,3 +64,16 @@ class Probe:
         fines = sum(e.massLost for e in self.degradingEngines()) if self.p['lostAsFines'] else 0.0
         return (grading.passing(2 * np.array(self.initial['radii']), self.initial['masses']),
                 grading.passing(2 * r, m, fines=fines))
+
+    def inertialNumber(self):
+        """The sample's inertial number now (pkg/InertialNumber.hpp): the plate's speed over the sample height,
+        the grains' mean diameter, their density as their inertia sees it under density scaling, and the
+        grains' force on the plate over the cylinder's section; NaN while the grains carry less than LOADED
+        Fmax (the seating, where p -> 0 makes any motion look inertial)."""
+        F, h, radii = self.loading.force(), self.loading.top(), harvest.grains().radii
+        if not (F >= LOADED * self.p['Fmax'] and h > 0 and len(radii)):
+            return math.nan
+        rate = O.bodies[self.loading.plate].state.vel[2] / h
+        rho = scaledDensity(radii, self.p['density'], self.p['young'], self.p.scaledPWaveStep())
+        return float(_ballast.inertialNumber(rate, 2 * float(np.mean(radii)), rho,
+                                             F / (math.pi * self.cylinder.Rin ** 2)))
