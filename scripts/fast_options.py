@@ -1,10 +1,11 @@
 #!/usr/bin/python3
 """The fast options against the paper's settings (ballast.analysis.options; docs/performance.md):
 
-    scripts/fast_options.py docs/studies/fast-options docs/studies/Tc-4Hz --out docs/studies/fast-options
+    scripts/fast_options.py docs/studies/fast-options --out docs/studies/fast-options
 
-The option study's runs (each option a value of timeStep or stopAt) are paired by seed with the
-reference study's runs at the same f and T_c; writes comparison.json and options.png."""
+The study's runs of each option (ballast.analysis.options.OPTIONS) are paired by seed with the runs of
+the paper's settings at the same f and T_c: the same study's, or those of --reference (an older study's
+records); writes comparison.json and options.png."""
 import argparse
 import json
 import os
@@ -13,21 +14,19 @@ import sys
 from ballast.analysis import options
 from ballast.study.options import StudyError
 
-OPTIONS = {'stiffness': {'timeStep': 'stiffness'}, 'peak': {'stopAt': 0.5}}   # name -> the option's parameters
-
 
 def main(argv=None):
     ap = argparse.ArgumentParser(prog='scripts/fast_options.py', description=__doc__.split('\n\n')[0])
     ap.add_argument('study', help='the study (or its records) with the options')
-    ap.add_argument('reference', help="the study (or its records) with the paper's settings")
+    ap.add_argument('--reference', help="the study (or its records) with the paper's settings (default: STUDY's own)")
     ap.add_argument('--f', type=float, default=4.0, help='loading frequency of both [Hz] (default 4)')
     ap.add_argument('--Tc', type=float, default=6.25e-4, help='crushing period of both [s] (default 6.25e-4)')
     ap.add_argument('--out', required=True, help='where comparison.json and options.png go')
     a = ap.parse_args(argv)
     try:
-        ref = options.frame(a.reference, f=a.f, Tc=a.Tc)   # records older than the options: no timeStep, stopAt
+        ref = options.frame(a.reference or a.study, f=a.f, Tc=a.Tc, **options.PAPER)
         pairs, result = {}, {}
-        for name, select in OPTIONS.items():
+        for name, select in options.OPTIONS.items():
             opt = options.frame(a.study, f=a.f, Tc=a.Tc, **select)
             if len(opt):
                 pairs[name] = (opt, ref)

@@ -41,3 +41,16 @@ def test_identical_runs_and_too_few_pairs():
     assert c['meanDifference'] == 0 and c['pWilcoxon'] == 1.0 and c['cpuRatioMedian'] == 1.0
     with pytest.raises(ValueError, match='1 seed.s. in both studies'):
         options.compare(runs([1], [0.1], [1], [1]), a)
+
+
+def test_runs_older_than_an_option_hold_the_papers_value():
+    """Records made before timeStep / stopAt / densityStep existed count as the paper's settings."""
+    f = pd.DataFrame({'params.seed': [1, 2, 3, 4], 'params.f': [4.0] * 4,
+                      'params.timeStep': [None, 'pwave', 'stiffness', 'stiffness'],
+                      'params.stopAt': [None, 0.0, 0.5, 0.0]})
+    assert list(options.select(f, f=4.0, **options.PAPER)['params.seed']) == [1, 2]
+    assert list(options.select(f, **options.OPTIONS['combined'])['params.seed']) == [3]
+    assert list(options.select(f, **options.OPTIONS['stiffness'])['params.seed']) == [4]
+    assert options.select(f, **options.OPTIONS['peak']).empty
+    with pytest.raises(KeyError, match="no parameter 'Tc'"):
+        options.select(f, Tc=6.25e-4)

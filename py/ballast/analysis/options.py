@@ -1,12 +1,14 @@
 """The fast options of issue 25 against the paper's settings (docs/performance.md, "Validation"): for
 each option, the runs of a study with it and the runs of a reference study with the paper's settings,
-matched by seed (the same stored packing, so the pairs differ by the option only): the response (delta
+matched by seed (the same stored packing, so the pairs differ by the option only; the reference is the
+paper's rows of the same study, or an older study's records): the response (delta
 at the applied peak of eq. 8, what Fig. 5 reads), the crushes, the share of realizations that
 avalanche, a paired and a two-sample test, the paired mean difference with its 95 % interval, and the
 CPU ratio per seed. Needs no YADE."""
 import math
 
 import numpy as np
+import pandas as pd
 from scipy import stats
 
 from ..study.data import StudyRuns
@@ -15,13 +17,29 @@ AVALANCHE = 0.005   # [m] delta at the applied peak above which a realization av
 #                     realizations stay below 1 mm, avalanches settle 9-80 mm)
 
 
-def frame(path, **select):
-    """The finished runs of a study (or its records) whose parameters equal `select` ({name: value})."""
-    f = StudyRuns(path).frame()
-    for name, value in select.items():
-        col = f['params.' + name]
-        f = f[np.isclose(col.astype(float), value)] if isinstance(value, float) else f[col == value]
-    return f
+PAPER = {'timeStep': 'pwave', 'stopAt': 0.0, 'densityStep': 0.0}   # the fast options' values in the paper's settings
+OPTIONS = {'stiffness': dict(PAPER, timeStep='stiffness'), 'peak': dict(PAPER, stopAt=0.5),
+           'combined': dict(PAPER, timeStep='stiffness', stopAt=0.5)}   # name -> the option's parameters
+
+
+def frame(path, **values):
+    """The finished runs of a study (or its records) whose parameters equal `values` ({name: value})."""
+    return select(StudyRuns(path).frame(), path, **values)
+
+
+def select(runs, where='the runs', **values):
+    """The rows of a runs frame (StudyRuns.frame) whose parameters equal `values`; a fast option's column
+    that runs older than the option lack (or leave empty) holds the paper's value (PAPER)."""
+    for name, value in values.items():
+        col = runs.get('params.' + name)
+        if col is None:
+            if name not in PAPER:
+                raise KeyError('%s: no parameter %r' % (where, name))
+            col = pd.Series([PAPER[name]] * len(runs), index=runs.index, dtype=object)
+        if name in PAPER:
+            col = col.where(col.notna(), PAPER[name])
+        runs = runs[np.isclose(col.astype(float), value)] if isinstance(value, float) else runs[col == value]
+    return runs
 
 
 def compare(option, reference, response='deltaAtAppliedPeak'):
