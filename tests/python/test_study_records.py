@@ -177,8 +177,19 @@ def test_a_study_goes_on_from_its_records_on_another_machine(setup, tmp_path, ca
     made['row']['f'] = 3
     with open(rowJson, 'w') as fh:
         json.dump(made, fh)
-    with pytest.raises(StudyError, match='were made from other values than the table now gives: seed=1,f=2'):
+    with pytest.raises(StudyError, match='were made from other values than the table now gives: seed=1,f=2 .line 2: f 3'):
         Study(out=str(tmp_path / 'machine3'), **setup).run(LocalExecutor(1))
+    # compared as parameters: a column the record has and the table dropped, at its default, changes nothing
+    made = json.loads(good)
+    made['row']['m'] = '1'   # eq. 4's m, whose default is 1
+    with open(rowJson, 'w') as fh:
+        json.dump(made, fh)
+    assert Study(out=str(tmp_path / 'machine3'), **setup).run(LocalExecutor(1)) == 0
+    made['row']['m'] = '2'
+    with open(rowJson, 'w') as fh:
+        json.dump(made, fh)
+    with pytest.raises(StudyError, match=r'seed=1,f=2 \(line 2: m 2.0 -> 1.0\)'):
+        Study(out=str(tmp_path / 'machine4'), **setup).run(LocalExecutor(1))
     with open(rowJson, 'w') as fh:
         fh.write(good)
     # runs finished before records were asked for get theirs when the study starts again

@@ -32,6 +32,7 @@ import time
 import uuid
 
 from ..names import fmtTime
+from ..params import ParamError
 from .files import codeSha1, readSummary, sha1, writeAtomic
 from .options import OPTIONS, StudyError, experimentDeclaration, optionValue
 from .records import hasRecord, keepRecord, recordPath, writeIndex
@@ -115,6 +116,15 @@ class Study:
         except (OSError, ValueError):
             return {}
 
+    def runParameters(self, row):
+        """Every parameter of the run a recorded row gave (its cells checked as the table's are); None if
+        they no longer pass the check."""
+        cells = {k: v if isinstance(v, str) else str(v) for k, v in row.items() if k in self.declaration.params and v != '*'}
+        try:
+            return dict(self.declaration.check(cells, text=True))
+        except ParamError:
+            return None
+
     def dryRun(self):
         for n in self.lines:
             print('%4d  %-40s %s' % (n, self.table.runId(n), 'to run' if self.finishedRow(n) is None else 'finished (skipped)'))
@@ -143,13 +153,19 @@ class Study:
             os.makedirs(os.path.join(self.out, d), exist_ok=True)
         os.makedirs(self.packings, exist_ok=True)
         # a finished run made from a row that has changed since would be mixed into the results
+        # (compared as parameters: a column added or dropped at its default changes no run)
         stale = []
         for n in self.lines:
-            rr, row = self.finishedRow(n), self.rows[n]
-            if rr and rr.get('row') is not None and rr['row'] != row:
-                diff = ', '.join('%s %s -> %s' % (k, rr['row'].get(k), row.get(k))
-                                 for k in sorted(set(rr['row']) | set(row)) if rr['row'].get(k) != row.get(k))
-                stale.append('%s (line %d: %s)' % (self.table.runId(n), n, diff))
+            rr = self.finishedRow(n)
+            if rr and rr.get('row') is not None:
+                made, now = self.runParameters(rr['row']), dict(self.params[n])
+                other = [k for k in sorted(set(rr['row']) | set(self.rows[n])) if k not in self.declaration.params
+                         and rr['row'].get(k) != self.rows[n].get(k)]   # columns that are no parameter: as text
+                if made != now or other:
+                    diff = ['%s %s -> %s' % (k, made.get(k) if made else '?', now.get(k))
+                            for k in sorted(now) if made is None or made.get(k) != now.get(k)]
+                    diff += ['%s %s -> %s' % (k, rr['row'].get(k), self.rows[n].get(k)) for k in other]
+                    stale.append('%s (line %d: %s)' % (self.table.runId(n), n, ', '.join(diff)))
         if stale:
             raise StudyError('%s: finished run(s) in %s/runs were made from other values than the table now gives: %s. '
                              'Remove those run directories or choose another --out.' % (
