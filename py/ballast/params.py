@@ -276,6 +276,20 @@ COMMON = {
                              '0 = no density scaling', nonNegative, NUMBER_NONNEGATIVE),
 }
 
+# every experiment's density scaling (ballast.experiments.timestep)
+DENSITY_STEP = Param(0.0, 's', "density scaling: the loading's time step; every grain, fragments included, gets "
+                     "YADE's State.densityScaling so that its own P-wave step r sqrt(rho/E) reaches densityStep / "
+                     "dtSafety (never made lighter); other moving bodies as the experiment says; 0 = off (the "
+                     "paper's). At least the paper's step", nonNegative, NUMBER_NONNEGATIVE)
+
+
+def checkDensityStep(bad, step, paperStep):
+    """The cross-check of every experiment: densityStep 0 or at least the paper's step [s]."""
+    if 0 < step < paperStep:
+        bad('densityStep', "%g s is below the paper's step %.3g s (dtSafety PWaveTimeStep of the smallest grain): "
+                           'nothing would be scaled; give 0 (off) or at least %.3g s' % (step, paperStep, paperStep))
+
+
 # PyRunner's (YADE PeriodicEngine's) own settings, checked as the engines' parameters are: a negative or
 # NaN period switches a PeriodicEngine off without a word
 PERIODIC = {

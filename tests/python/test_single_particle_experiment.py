@@ -19,6 +19,8 @@ SIZES = [0.022, 0.032, 0.044]   # [m] three grains
 TOL_FORCE = 5e-3   # [-] measured against closed-form force: one step's rise (3e-4), the contact point r - u/2
 #                    instead of r (overlap / 2r ~ 4e-4) and the grain's inertia (below 2e-3 at 0.002 m/s)
 TOL_INERTIA = 1e-2  # [-] |F_top - F_bottom| / F at the crush: quasi-static
+TOL_FORCE_SCALED = 1e-2  # [-] with densityStep 3 x the paper's step: 9e-4 a step's rise + the inertia (at 10 x: 1.4e-2
+#                          and an inertia ratio of 2e-2: too heavy a grain for 0.002 m/s)
 
 
 @pytest.mark.parametrize('criterion', ['vonMises', 'maxContactForce', 'majorPrincipal'])
@@ -101,3 +103,27 @@ def test_grains_side_by_side_never_touch_one_another(tmp_path):
     t.step = lambda: (watch(), step())
     test.load()
     assert max(seen) == 2 * 12 and test.summary()['nCrushed'] == 12   # both platens of every grain, at first
+
+
+def test_density_scaling_crushes_at_the_same_force_in_fewer_steps(tmp_path):
+    """densityStep (the experiment base's, ballast.experiments.timestep): three times the paper's step; the
+    platens are kinematic, the grain heavier, the test still quasi-static and at the closed-form force."""
+    from yade import O
+    from yade.wrapper import NewtonIntegrator, Sphere
+    paper = 0.8 * 0.011 * (2600 / 3e11) ** 0.5   # dtSafety x PWaveTimeStep of the smallest grain [s]
+    kw = dict(diameters=SIZES, m=0.5, speed=0.002, progress=60)
+    plain = SingleParticle(results=str(tmp_path / 'plain'), **kw).run()
+    test = SingleParticle(densityStep=3 * paper, results=str(tmp_path / 'scaled'), **kw)
+    s = test.run()
+    assert next(e for e in O.engines if isinstance(e, NewtonIntegrator)).densityScaling and O.dt == 3 * paper
+    t = test.table()
+    for d, F in zip(t.diameter, t.force):  # one step's rise is now 3 x 3e-4, the grain 9-16 times heavier
+        assert F == pytest.approx(crushingForce('vonMises', d / 2, 3.1e6, 0.5), rel=TOL_FORCE_SCALED)
+    assert s['inertiaRatioMax'] < TOL_INERTIA
+    assert s['steps'] < 0.4 * plain['steps']    # 1/3 of the steps, give or take the last ones
+    # every sphere, fragments included, scaled to its own step: (r sqrt(rho/E) / (densityStep / dtSafety))^2 <= 1
+    for b in O.bodies:
+        if b is not None and isinstance(b.shape, Sphere):
+            rho = b.state.mass / (4 / 3 * 3.141592653589793 * b.shape.radius ** 3)
+            want = min(1.0, (b.shape.radius * (rho / 3e11) ** 0.5 / (3 * paper / 0.8)) ** 2)
+            assert b.state.densityScaling == pytest.approx(want, rel=1e-12)

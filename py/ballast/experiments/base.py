@@ -30,6 +30,7 @@ import zlib
 from yade import O
 
 from .. import runtime
+from . import timestep
 from ..names import runDirName
 from ..params import ParamError, requireWritableDir
 from ..study.files import syncDir, writeAtomic
@@ -262,6 +263,29 @@ class Experiment:
 
     def reopened(self):
         """After fromScene (subclasses: say where the run goes on)."""
+
+    # ------------------------------------------------------------------ density scaling (experiments.timestep)
+    def densityGuard(self):
+        """YADE does not save NewtonIntegrator.densityScaling: a scene saved with density scaling holds this
+        callback alive, first in the chain, so that the first step after O.load runs it, and with it the
+        runtime's restore (restored() calls resumeDensityScaling) before Newton moves anything; then it
+        sleeps until the next save."""
+        timestep.engine(timestep.GUARD).dead = True
+
+    def beforeSave(self):
+        """The runtime's call before O.save: the density guard awake in the saved scene."""
+        guard = timestep.engine(timestep.GUARD)
+        if guard is not None:
+            guard.dead = False
+
+    def restored(self):
+        """After the runtime rebuilt the scene's objects (subclasses that override it call this too)."""
+        self.resumeDensityScaling()
+
+    def resumeDensityScaling(self):
+        """After a restore: Newton scales densities again if this run does (YADE's O.load leaves it off)."""
+        if timestep.engine(timestep.GUARD) is not None:
+            timestep.enableDensityScaling()
 
     @classmethod
     def reopen(cls, path, readOnly=False, **overrides):

@@ -30,16 +30,16 @@ import os
 
 import numpy as np
 from yade import O
-from yade.wrapper import GlobalStiffnessTimeStepper, NewtonIntegrator
+from yade.wrapper import GlobalStiffnessTimeStepper
 
-from ... import _ballast, grading, harvest, runtime
-from ...densityscaling import scaleDensities
+from ... import grading, runtime
 from ...engines import BallastAbrasionEngine, BallastCrushEngine
 from ...geometry import sphereVolume
 from ...names import fmtTime
 from ...params import CRUSH, validate
 from ...study.files import writeAtomic
 from .. import grains
+from .. import timestep
 from ..base import Experiment
 from . import scene
 from .loading import MODES
@@ -50,24 +50,7 @@ from .probe import Probe, counter, degradingEngines, engine
 
 SAVER, CONTAINMENT = 'oedoSaver', 'oedoContainment'
 PLATE_STIFFNESS_MARGIN = 2.0  # [-] densityStep: the plate's contacts may stiffen this much as grains crush under it
-DENSITY_GUARD, DENSITY_SWITCH = 'densityScalingGuard', 'densityScalingSwitch'
 STIFFNESS_UPDATE = 10   # [steps] timeStep stiffness: between two updates of YADE's GlobalStiffnessTimeStepper
-
-
-def guard(label):
-    """The engine with this label in O.engines, or None."""
-    return next((e for e in O.engines if e.label == label), None)
-
-
-def enableDensityScaling():
-    """NewtonIntegrator.densityScaling on. YADE 2023.02a's setter only switches it on when it finds a
-    GlobalStiffnessTimeStepper among the scene's current engines (and one running with densityScaling
-    aborts on the Box plate): one stays in O.engines, dead and inactive, for the setter. It then works
-    inside a step too, where a new O.engines takes effect only at the next one."""
-    if guard(DENSITY_SWITCH) is None:
-        O.engines = O.engines + [GlobalStiffnessTimeStepper(dead=True, active=False, label=DENSITY_SWITCH)]
-    next(e for e in O.engines if isinstance(e, NewtonIntegrator)).densityScaling = True
-    guard(DENSITY_SWITCH).densityScaling = False  # the setter switched the stepper's on too
 
 
 @runtime.persistent('Oedometer')
@@ -240,35 +223,15 @@ class Oedometer(Experiment):
         self.save(os.path.join(self.out, 'state-start.yade.gz'))
 
     def scaleDensities(self):
-        """Density scaling from the start of loading (docs/performance.md): O.dt = densityStep, Newton's
-        densityScaling on, every grain's own P-wave step densityStep / dtSafety (the engines scale the grains
-        they change), and the plate, if it moves, from the stiffness of its contacts: a body of mass M on
-        springs K is stable below 2 sqrt(M / K); taken as sqrt(M / (PLATE_STIFFNESS_MARGIN K)), as more
-        contacts form under it when grains crush."""
+        """Density scaling from the start of loading (experiments.timestep): every grain's own P-wave step
+        densityStep / dtSafety, and the plate, if it moves, from the stiffness of its contacts: a body of
+        mass M on springs K is stable below 2 sqrt(M / K); taken as sqrt(M / (PLATE_STIFFNESS_MARGIN K)), as
+        more contacts form under it when grains crush."""
         p = self.p
-        O.dt = p['densityStep']
-        enableDensityScaling()
-        O.engines = [runtime.callback(self, 'densityGuard', iterPeriod=1, dead=True, label=DENSITY_GUARD)] + list(O.engines)
-        scaleDensities(harvest.grains().ids, p.scaledPWaveStep())
         plate = O.bodies[self.loading.plate]
         K = sum(i.phys.kn for i in plate.intrs() if i.isReal)
-        # every body Newton moves needs a factor: YADE's default, -1, would turn its accelerations around
-        plate.state.densityScaling = 1.0
-        if plate.dynamic and K > 0:
-            own = math.sqrt(plate.state.mass / (PLATE_STIFFNESS_MARGIN * K))
-            plate.state.densityScaling = float(_ballast.densityScaling(own, p.scaledPWaveStep()))
-
-    def densityGuard(self):
-        """YADE does not save NewtonIntegrator.densityScaling: a scene saved with density scaling holds this
-        callback alive, first in the chain, so that the first step after O.load runs it, and with it the
-        runtime's restore (restored() switches the flag on again) before Newton moves anything; then it
-        sleeps until the next save."""
-        guard(DENSITY_GUARD).dead = True
-
-    def beforeSave(self):
-        """The runtime's call before O.save: the density guard awake in the saved scene."""
-        if guard(DENSITY_GUARD) is not None:
-            guard(DENSITY_GUARD).dead = False
+        own = math.sqrt(plate.state.mass / (PLATE_STIFFNESS_MARGIN * K)) if plate.dynamic and K > 0 else None
+        timestep.startDensityScaling(self, p['densityStep'], p.scaledPWaveStep(), {self.loading.plate: own})
 
     def addEngines(self):
         """BallastCrushEngine and BallastAbrasionEngine after NewtonIntegrator, as the parameters say."""
@@ -432,8 +395,7 @@ class Oedometer(Experiment):
         """After the runtime rebuilt the scene's objects: the pieces read this run again, and Newton scales
         densities again if the run does (YADE's O.load leaves it off)."""
         self.loading.bind(self.p)
-        if self.p['densityStep'] > 0 and self.initial is not None:
-            enableDensityScaling()
+        self.resumeDensityScaling()
         if self.initial is not None:
             self.probe = Probe(self.p, self.loading, self.rig, self.dir, self.initial)
             self.outputs.bind(self.probe)

@@ -12,9 +12,9 @@ import re
 
 from ... import _ballast
 from ...geometry import frictPhysStiffness
-from ...params import (ABRASION, CRUSH, INT32_MAX, NUMBER_NONNEGATIVE, NUMBER_POSITIVE, Param, ParamError, Parameters,
-                       anyText, between, boolean, choice, flag, intAtLeast, intBetween, literal, nonNegative, positive,
-                       positiveInt, text)
+from ...params import (ABRASION, CRUSH, DENSITY_STEP, INT32_MAX, NUMBER_NONNEGATIVE, NUMBER_POSITIVE, Param, ParamError,
+                       Parameters, anyText, between, boolean, checkDensityStep, choice, flag, intAtLeast, intBetween,
+                       literal, nonNegative, positive, positiveInt, text)
 from .loadcurve import halfLoadTime, peakTime
 
 OWNER = 'Oedometer'
@@ -101,11 +101,8 @@ PARAMS = {
                       "GlobalStiffnessTimeStepper, safety dtSafety, from the contacts' stiffness every 10 "
                       "steps; after a replacement scaled as for pwave until its next update)",
                       choice('pwave', 'stiffness'), "'pwave' or 'stiffness'", text),
-    'densityStep': Param(0.0, 's', "density scaling: the loading's time step; every grain, fragments included, "
-                         "gets YADE's State.densityScaling so that its own P-wave step r sqrt(rho/E) reaches "
-                         'densityStep / dtSafety (never made lighter), the plate from the stiffness of its contacts; '
-                         "0 = off (the paper's). At least the paper's step, with timeStep pwave", nonNegative,
-                         NUMBER_NONNEGATIVE),
+    'densityStep': DENSITY_STEP.withDefault(0.0, DENSITY_STEP.doc + '; the plate from the stiffness of its contacts; '
+                                            'with timeStep pwave'),
     # crushing (section 2) and abrasion (section 3): the engines' declarations
     'crush': Param(True, '-', 'BallastCrushEngine on', boolean, '0 or 1', flag),
     'ft0': CRUSH['ft0'].withDefault(3.1e6),  # calibrated: docs/oedometer.md, "Choice of the defaults"
@@ -235,14 +232,11 @@ class OedometerParameters(Parameters):
         """Checks between parameters; each error names the parameter at fault."""
         p, bad = self, self.bad
         dt = self.loadingTimeStep()
+        checkDensityStep(bad, p['densityStep'], self.startTimeStep())
         if p['densityStep'] > 0:
             if p['timeStep'] != 'pwave':
                 bad('densityStep', "%g s with timeStep = %r: density scaling sets the step itself; give timeStep "
                                    "'pwave' or densityStep 0" % (p['densityStep'], p['timeStep']))
-            if p['densityStep'] < self.startTimeStep():
-                bad('densityStep', "%g s is below the paper's step %.3g s (dtSafety PWaveTimeStep of the smallest grain): "
-                                   'nothing would be scaled; give 0 (off) or at least %.3g s' % (
-                                       p['densityStep'], self.startTimeStep(), self.startTimeStep()))
         steps = p['cycles'] / p['f'] / dt
         if steps > MAX_LOADING_STEPS:
             bad('f', '%d cycles at %g Hz take %.3g time steps of %.3g s (the loading time step), '

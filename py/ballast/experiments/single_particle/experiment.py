@@ -23,6 +23,7 @@ from yade.wrapper import (Bo1_Box_Aabb, Bo1_Sphere_Aabb, ForceResetter, Ig2_Box_
 
 from ... import runtime
 from ...engines import BallastCrushEngine
+from .. import timestep
 from ..base import Experiment
 from ..oedometer.scene import LAWS, materials
 from . import outputs
@@ -156,10 +157,12 @@ class SingleParticle(Experiment):
             runtime.callback(tester, 'measure', iterPeriod=1, label='singleParticleForces'),
             BallastCrushEngine(ft0=p['ft0'], m=p['m'], pattern=p['pattern'], criterion=p['criterion'],
                                weibullModulus=p['weibullModulus'], seed=p['seed'], rMin=p['rMin'], adjustDt=False,
-                               label='crush', **p.crushPeriod()),
+                               scaledPWaveStep=p['densityStep'] / p['dtSafety'], label='crush', **p.crushPeriod()),
             runtime.callback(tester, 'step', iterPeriod=1, label='singleParticleTester')]
         O.dt = p['dtSafety'] * utils.PWaveTimeStep()
         self.adopt()
+        if p['densityStep'] > 0:  # the platens are kinematic: only the grains move under Newton
+            timestep.startDensityScaling(self, p['densityStep'], p['densityStep'] / p['dtSafety'], {})
         self.say('prepared %d grains of %.1f-%.1f mm, platens closing at %g m/s, dt = %.3g s' % (
             len(d), 1e3 * d.min(), 1e3 * d.max(), p['speed'], O.dt))
         return self

@@ -4,7 +4,8 @@ oedometer's declarations (the same grains, the same steel); the test's own are t
 the platens' speed and when a grain counts as not crushed. Needs no YADE."""
 import math
 
-from ...params import CRUSH, INT32_MAX, Param, Parameters, between, intBetween, numberList, positive
+from ...params import (CRUSH, DENSITY_STEP, INT32_MAX, Param, Parameters, between, checkDensityStep, intBetween,
+                       numberList, positive)
 from ..oedometer.parameters import PARAMS as OEDOMETER
 from .closedform import crushingForce
 
@@ -29,6 +30,8 @@ PARAMS = dict({
                 OEDOMETER['Tc'].allowed),
     'ft0': OEDOMETER['ft0'],
     'rMin': CRUSH['rMin'].withDefault(0.0, 'grains smaller than rMin never crush (0: every grain of the test can)'),
+    'densityStep': DENSITY_STEP.withDefault(0.0, DENSITY_STEP.doc + '; the platens move at a set speed (not scaled); '
+                                            'inertiaRatioMax says what the heavier grain costs'),
 }, **{k: OEDOMETER[k] for k in ('dMin', 'dMax', 'young', 'poisson', 'friction', 'density', 'steelYoungRatio',
                                 'steelPoisson', 'steelFriction', 'steelDensity', 'law', 'damping', 'dtSafety', 'm',
                                 'pattern', 'criterion', 'weibullModulus', 'results', 'runId', 'progress')})
@@ -59,7 +62,9 @@ class SingleParticleParameters(Parameters):
             bad('n', 'given with %d diameters: give one or the other' % len(p['diameters']))
         # the platens of one grain close by maxStrain d at speed: at least 100 steps (a loading, not a blow)
         dMin = min(p['diameters']) if p['diameters'] else p['dMin']
-        dt = p['dtSafety'] * dMin / 2 * math.sqrt(p['density'] / p['young'])
+        paper = p['dtSafety'] * dMin / 2 * math.sqrt(p['density'] / p['young'])
+        checkDensityStep(bad, p['densityStep'], paper)
+        dt = p['densityStep'] or paper
         steps = p['maxStrain'] * dMin / p['speed'] / dt
         if steps < 100:
             bad('speed', 'closes the smallest grain by maxStrain in %.3g time steps of %.3g s, fewer than 100: not '

@@ -1,0 +1,42 @@
+"""The experiment base's fast-step option, density scaling (docs/performance.md; the parameter is
+ballast.params.DENSITY_STEP, checked by checkDensityStep): how a scene is switched to it and kept on it
+across O.save / O.load.
+The per-body factors are the C++ core's (pkg/DensityScaling.hpp, through ballast.densityscaling)."""
+from yade import O
+from yade.wrapper import GlobalStiffnessTimeStepper, NewtonIntegrator
+
+from .. import _ballast, harvest, runtime
+from ..densityscaling import scaleDensities
+
+GUARD, SWITCH = 'densityScalingGuard', 'densityScalingSwitch'
+
+
+def engine(label):
+    """The engine with this label in O.engines, or None."""
+    return next((e for e in O.engines if e.label == label), None)
+
+
+def enableDensityScaling():
+    """NewtonIntegrator.densityScaling on. YADE 2023.02a's setter only switches it on when it finds a
+    GlobalStiffnessTimeStepper among the scene's current engines (and one running with densityScaling
+    aborts on the Box plate): one stays in O.engines, dead and inactive, for the setter. It then works
+    inside a step too, where a new O.engines takes effect only at the next one. (Reading the flag back
+    makes YADE warn when no stepper is there, so the tests read it, not the runs.)"""
+    if engine(SWITCH) is None:
+        O.engines = O.engines + [GlobalStiffnessTimeStepper(dead=True, active=False, label=SWITCH)]
+    next(e for e in O.engines if isinstance(e, NewtonIntegrator)).densityScaling = True
+    engine(SWITCH).densityScaling = False  # the setter switched the stepper's on too
+
+
+def startDensityScaling(exp, step, ownStep, others):
+    """Density scaling from now on: O.dt = step [s], Newton's densityScaling on, every grain's own P-wave
+    step ownStep [s] (the engines scale the grains they change, given scaledPWaveStep = ownStep), and
+    `others` {body id: own critical step [s] or None}: the other bodies Newton moves (YADE's default
+    factor, -1, would turn their accelerations around; None: not scaled). Puts exp's guard first in the
+    chain (see Experiment.densityGuard)."""
+    O.dt = step
+    enableDensityScaling()
+    O.engines = [runtime.callback(exp, 'densityGuard', iterPeriod=1, dead=True, label=GUARD)] + list(O.engines)
+    scaleDensities(harvest.grains().ids, ownStep)
+    for bid, own in others.items():
+        O.bodies[bid].state.densityScaling = 1.0 if own is None else float(_ballast.densityScaling(own, ownStep))
