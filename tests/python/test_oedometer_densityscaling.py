@@ -97,3 +97,10 @@ def test_bad_density_steps_refused(values, words):
     with pytest.raises(ParamError, match='densityStep') as e:
         Oedometer(**dict(WEAK, **values))
     assert words in str(e.value)
+
+
+def test_a_reopened_run_scales_at_once(run, tmp_path):
+    exp, _, _ = run
+    again = Oedometer.reopen(os.path.join(exp.out, 'state-end.yade.gz'), results=str(tmp_path), runId='again')
+    assert next(e for e in O.engines if isinstance(e, NewtonIntegrator)).densityScaling  # before any step
+    assert again.p['densityStep'] == STEP and O.dt == STEP
