@@ -276,15 +276,22 @@ COMMON = {
                              '0 = no density scaling', nonNegative, NUMBER_NONNEGATIVE),
 }
 
-# every experiment's density scaling (ballast.experiments.timestep)
+# every experiment's time step options (ballast.experiments.timestep)
+TIME_STEP = Param('pwave', '-', "the time step: 'pwave' (dtSafety x YADE's PWaveTimeStep of the smallest grain, eq. 5, "
+                  "scaled down after each replacement: the paper's) or 'stiffness' (YADE's GlobalStiffnessTimeStepper, "
+                  "safety dtSafety, from the contacts' stiffness every 10 steps; after a replacement scaled as for "
+                  "pwave until its next update)", choice('pwave', 'stiffness'), "'pwave' or 'stiffness'", text)
 DENSITY_STEP = Param(0.0, 's', "density scaling: the loading's time step; every grain, fragments included, gets "
                      "YADE's State.densityScaling so that its own P-wave step r sqrt(rho/E) reaches densityStep / "
                      "dtSafety (never made lighter); other moving bodies as the experiment says; 0 = off (the "
                      "paper's). At least the paper's step", nonNegative, NUMBER_NONNEGATIVE)
 
 
-def checkDensityStep(bad, step, paperStep):
-    """The cross-check of every experiment: densityStep 0 or at least the paper's step [s]."""
+def checkDensityStep(bad, step, paperStep, timeStep):
+    """The cross-check of every experiment: densityStep 0, or at least the paper's step [s] with timeStep pwave."""
+    if step > 0 and timeStep != 'pwave':
+        bad('densityStep', "%g s with timeStep = %r: density scaling sets the step itself; give timeStep 'pwave' or "
+                           'densityStep 0' % (step, timeStep))
     if 0 < step < paperStep:
         bad('densityStep', "%g s is below the paper's step %.3g s (dtSafety PWaveTimeStep of the smallest grain): "
                            'nothing would be scaled; give 0 (off) or at least %.3g s' % (step, paperStep, paperStep))

@@ -127,3 +127,20 @@ def test_density_scaling_crushes_at_the_same_force_in_fewer_steps(tmp_path):
             rho = b.state.mass / (4 / 3 * 3.141592653589793 * b.shape.radius ** 3)
             want = min(1.0, (b.shape.radius * (rho / 3e11) ** 0.5 / (3 * paper / 0.8)) ** 2)
             assert b.state.densityScaling == pytest.approx(want, rel=1e-12)
+
+
+def test_the_stiffness_step_crushes_at_the_same_force_in_fewer_steps(tmp_path):
+    """timeStep (the experiment base's): YADE's GlobalStiffnessTimeStepper instead of eq. 5's step."""
+    from yade import O
+    kw = dict(diameters=SIZES, m=0.5, speed=0.002, progress=60)
+    plain = SingleParticle(results=str(tmp_path / 'plain'), **kw).run()
+    s = SingleParticle(timeStep='stiffness', results=str(tmp_path / 'stiffness'), **kw).run()
+    assert O.dynDt and any(type(e).__name__ == 'GlobalStiffnessTimeStepper' for e in O.engines)
+    assert s['closedFormErrorMax'] < TOL_FORCE and s['inertiaRatioMax'] < TOL_INERTIA
+    assert s['steps'] < 0.8 * plain['steps']   # 1 301 against 2 201 on this machine's YADE
+
+
+def test_density_scaling_and_the_stiffness_step_exclude_each_other():
+    from ballast.params import ParamError
+    with pytest.raises(ParamError, match='density scaling sets the step itself'):
+        SingleParticle(diameters=SIZES, timeStep='stiffness', densityStep=1e-5)

@@ -9,6 +9,7 @@ from .. import _ballast, harvest, runtime
 from ..densityscaling import scaleDensities
 
 GUARD, SWITCH = 'densityScalingGuard', 'densityScalingSwitch'
+STIFFNESS_UPDATE = 10   # [steps] timeStep stiffness: between two updates of YADE's GlobalStiffnessTimeStepper
 
 
 def engine(label):
@@ -40,3 +41,13 @@ def startDensityScaling(exp, step, ownStep, others):
     scaleDensities(harvest.grains().ids, ownStep)
     for bid, own in others.items():
         O.bodies[bid].state.densityScaling = 1.0 if own is None else float(_ballast.densityScaling(own, ownStep))
+
+
+def startStiffnessStep(safety):
+    """timeStep 'stiffness': YADE's GlobalStiffnessTimeStepper with the safety factor, every STIFFNESS_UPDATE
+    steps, just before NewtonIntegrator; the current O.dt until its first update."""
+    chain = list(O.engines)
+    k = next(i for i, e in enumerate(chain) if isinstance(e, NewtonIntegrator))
+    O.engines = chain[:k] + [GlobalStiffnessTimeStepper(timestepSafetyCoefficient=safety, timeStepUpdateInterval=STIFFNESS_UPDATE,
+                                                        defaultDt=O.dt, label='timeStepper')] + chain[k:]
+    O.dynDt = True

@@ -30,7 +30,6 @@ import os
 
 import numpy as np
 from yade import O
-from yade.wrapper import GlobalStiffnessTimeStepper
 
 from ... import grading, runtime
 from ...engines import BallastAbrasionEngine, BallastCrushEngine
@@ -41,7 +40,6 @@ from ...study.files import writeAtomic
 from .. import grains
 from .. import timestep
 from ..base import Experiment
-from . import scene
 from .loading import MODES
 from .outputs import Outputs
 from .packing import StoredPacking
@@ -50,7 +48,6 @@ from .probe import Probe, counter, degradingEngines, engine
 
 SAVER, CONTAINMENT = 'oedoSaver', 'oedoContainment'
 PLATE_STIFFNESS_MARGIN = 2.0  # [-] densityStep: the plate's contacts may stiffen this much as grains crush under it
-STIFFNESS_UPDATE = 10   # [steps] timeStep stiffness: between two updates of YADE's GlobalStiffnessTimeStepper
 
 
 @runtime.persistent('Oedometer')
@@ -198,10 +195,7 @@ class Oedometer(Experiment):
         self.loading.start(p, self.rig)
         self.addEngines()
         if p['timeStep'] == 'stiffness':  # from the contacts' stiffness (YADE), instead of eq. 5's P-wave step
-            scene.insertBeforeNewton([GlobalStiffnessTimeStepper(
-                timestepSafetyCoefficient=p['dtSafety'], timeStepUpdateInterval=STIFFNESS_UPDATE, defaultDt=O.dt,
-                label='timeStepper')])
-            O.dynDt = True
+            timestep.startStiffnessStep(p['dtSafety'])
         if p['densityStep'] > 0:
             self.scaleDensities()
         x, r, m = grains.arrays()

@@ -13,7 +13,7 @@ import re
 from ... import _ballast
 from ...geometry import frictPhysStiffness
 from ...params import (ABRASION, CRUSH, DENSITY_STEP, INT32_MAX, NUMBER_NONNEGATIVE, NUMBER_POSITIVE, Param, ParamError,
-                       Parameters, anyText, between, boolean, checkDensityStep, choice, flag, intAtLeast, intBetween,
+                       Parameters, TIME_STEP, anyText, between, boolean, checkDensityStep, choice, flag, intAtLeast, intBetween,
                        literal, nonNegative, positive, positiveInt, text)
 from .loadcurve import halfLoadTime, peakTime
 
@@ -96,11 +96,7 @@ PARAMS = {
     'dtSafety': Param(0.8, '-', 'time step = dtSafety * PWaveTimeStep() (eq. 5; conservative for Hertz contacts); '
                       'with timeStep stiffness the stepper\'s safety factor', between(1e-9, 1, closedHi=True),
                       'a number in (0, 1]'),
-    'timeStep': Param('pwave', '-', "the loading's time step: 'pwave' (dtSafety x YADE's PWaveTimeStep of the smallest "
-                      "grain, eq. 5, scaled down after each replacement: the paper's) or 'stiffness' (YADE's "
-                      "GlobalStiffnessTimeStepper, safety dtSafety, from the contacts' stiffness every 10 "
-                      "steps; after a replacement scaled as for pwave until its next update)",
-                      choice('pwave', 'stiffness'), "'pwave' or 'stiffness'", text),
+    'timeStep': TIME_STEP,
     'densityStep': DENSITY_STEP.withDefault(0.0, DENSITY_STEP.doc + '; the plate from the stiffness of its contacts; '
                                             'with timeStep pwave'),
     # crushing (section 2) and abrasion (section 3): the engines' declarations
@@ -232,11 +228,7 @@ class OedometerParameters(Parameters):
         """Checks between parameters; each error names the parameter at fault."""
         p, bad = self, self.bad
         dt = self.loadingTimeStep()
-        checkDensityStep(bad, p['densityStep'], self.startTimeStep())
-        if p['densityStep'] > 0:
-            if p['timeStep'] != 'pwave':
-                bad('densityStep', "%g s with timeStep = %r: density scaling sets the step itself; give timeStep "
-                                   "'pwave' or densityStep 0" % (p['densityStep'], p['timeStep']))
+        checkDensityStep(bad, p['densityStep'], self.startTimeStep(), p['timeStep'])
         steps = p['cycles'] / p['f'] / dt
         if steps > MAX_LOADING_STEPS:
             bad('f', '%d cycles at %g Hz take %.3g time steps of %.3g s (the loading time step), '

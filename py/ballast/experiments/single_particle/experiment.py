@@ -163,6 +163,8 @@ class SingleParticle(Experiment):
         self.adopt()
         if p['densityStep'] > 0:  # the platens are kinematic: only the grains move under Newton
             timestep.startDensityScaling(self, p['densityStep'], p['densityStep'] / p['dtSafety'], {})
+        if p['timeStep'] == 'stiffness':
+            timestep.startStiffnessStep(p['dtSafety'])
         self.say('prepared %d grains of %.1f-%.1f mm, platens closing at %g m/s, dt = %.3g s' % (
             len(d), 1e3 * d.min(), 1e3 * d.max(), p['speed'], O.dt))
         return self

@@ -4,8 +4,8 @@ oedometer's declarations (the same grains, the same steel); the test's own are t
 the platens' speed and when a grain counts as not crushed. Needs no YADE."""
 import math
 
-from ...params import (CRUSH, DENSITY_STEP, INT32_MAX, Param, Parameters, between, checkDensityStep, intBetween,
-                       numberList, positive)
+from ...params import (CRUSH, DENSITY_STEP, INT32_MAX, TIME_STEP, Param, Parameters, between, checkDensityStep,
+                       intBetween, numberList, positive)
 from ..oedometer.parameters import PARAMS as OEDOMETER
 from .closedform import crushingForce
 
@@ -30,6 +30,7 @@ PARAMS = dict({
                 OEDOMETER['Tc'].allowed),
     'ft0': OEDOMETER['ft0'],
     'rMin': CRUSH['rMin'].withDefault(0.0, 'grains smaller than rMin never crush (0: every grain of the test can)'),
+    'timeStep': TIME_STEP,
     'densityStep': DENSITY_STEP.withDefault(0.0, DENSITY_STEP.doc + '; the platens move at a set speed (not scaled); '
                                             'inertiaRatioMax says what the heavier grain costs'),
 }, **{k: OEDOMETER[k] for k in ('dMin', 'dMax', 'young', 'poisson', 'friction', 'density', 'steelYoungRatio',
@@ -63,7 +64,7 @@ class SingleParticleParameters(Parameters):
         # the platens of one grain close by maxStrain d at speed: at least 100 steps (a loading, not a blow)
         dMin = min(p['diameters']) if p['diameters'] else p['dMin']
         paper = p['dtSafety'] * dMin / 2 * math.sqrt(p['density'] / p['young'])
-        checkDensityStep(bad, p['densityStep'], paper)
+        checkDensityStep(bad, p['densityStep'], paper, p['timeStep'])
         dt = p['densityStep'] or paper
         steps = p['maxStrain'] * dMin / p['speed'] / dt
         if steps < 100:
