@@ -54,3 +54,16 @@ def test_runs_older_than_an_option_hold_the_papers_value():
     assert options.select(f, **options.OPTIONS['peak']).empty
     with pytest.raises(KeyError, match="no parameter 'Tc'"):
         options.select(f, Tc=6.25e-4)
+
+
+def test_the_markdown_table_holds_the_numbers():
+    opt = runs([1, 2, 3, 4], [0.050, 0.001, 0.040, 0.0003], [150, 3, 140, 0], [60, 30, 50, 20])
+    ref = runs([1, 2, 3, 4], [0.045, 0.0008, 0.004, 0.0002], [140, 2, 4, 0], [120, 60, 40, 40])
+    table = options.markdown({'peak': options.compare(opt, ref)})
+    head, rule, row = table.splitlines()
+    assert head.count('|') == rule.count('|') == row.count('|') == 12
+    cells = [c.strip() for c in row.split('|')[1:-1]]
+    assert cells[:3] == ['peak', '4', '22.8 (12.5)']          # means [mm]: 91.3 / 4, 49.99 / 4
+    assert cells[3].startswith('+10.3 [')                     # (5 + 0.2 + 36 + 0.1) / 4 mm
+    assert cells[7] == '50 % (25 %)' and cells[8] == '1 of 4'  # seed 3: 4 mm quiet, 40 mm avalanche
+    assert cells[9:] == ['x0.50', 'x0.50']

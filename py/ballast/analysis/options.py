@@ -79,6 +79,24 @@ def compare(option, reference, response='deltaAtAppliedPeak'):
     return out
 
 
+def markdown(result):
+    """The comparisons ({option: compare()}) as the table of docs/performance.md: per option the means of
+    delta at the applied peak [mm], the paired difference with its 95 % interval, Cohen's d_z, the two
+    tests' p, the share avalanching, the seeds that changed class, and the loading-step and CPU ratios."""
+    lines = ['| option | seeds | delta, mean [mm] (paper\'s settings) | paired difference [mm], 95 % | d_z | Wilcoxon p '
+             '| Mann-Whitney p | avalanching (paper\'s) | seeds that changed class | loading steps | CPU |',
+             '|' + '---|' * 11]
+    for name, r in result.items():
+        changed = r['changedClass']
+        lines.append('| %s | %d | %.1f (%.1f) | %+.1f [%.1f, %.1f] | %.2f | %.2g | %.2g | %.0f %% (%.0f %%) | %s | x%.2f | x%.2f |' % (
+            name, r['n'], 1e3 * r['option']['mean'], 1e3 * r['reference']['mean'], 1e3 * r['meanDifference'],
+            1e3 * r['meanDifferenceLow'], 1e3 * r['meanDifferenceHigh'], r['cohenDz'], r['pWilcoxon'], r['pMannWhitney'],
+            100 * r['option']['avalanching'], 100 * r['reference']['avalanching'],
+            '%d of %d' % (len(changed), r['n']) if changed else 'none', r.get('loadStepsRatioMedian', float('nan')),
+            r['cpuRatioMedian']))
+    return '\n'.join(lines) + '\n'
+
+
 def figure(pairs, path):
     """delta at the applied peak of each seed, the option against the paper's settings, one panel per
     option (pairs: {option: (option frame, reference frame)}), with the 1:1 line."""
