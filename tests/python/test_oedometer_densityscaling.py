@@ -104,3 +104,14 @@ def test_a_reopened_run_scales_at_once(run, tmp_path):
     again = Oedometer.reopen(os.path.join(exp.out, 'state-end.yade.gz'), results=str(tmp_path), runId='again')
     assert next(e for e in O.engines if isinstance(e, NewtonIntegrator)).densityScaling  # before any step
     assert again.p['densityStep'] == STEP and O.dt == STEP
+
+
+def test_growing_fragments_are_scaled_again(tmp_path):
+    """keep='volume': fragments grow back to the parent's volume over growTime; each growth step rescales
+    them (a larger grain needs less scaling), so the factors are the hand values at the end too."""
+    exp = Oedometer(densityStep=STEP, keep='volume', results=str(tmp_path), runId='grow',
+                    packingDir=os.path.join(str(tmp_path), 'packings'), **WEAK)
+    s = exp.run()
+    assert s['nCrushed'] > 0 and s['nEscaped'] == 0
+    got, want = expectedFactors()
+    np.testing.assert_allclose(got, want, rtol=1e-12)
