@@ -30,7 +30,7 @@ import zlib
 from yade import O
 
 from .. import runtime
-from . import timestep
+from . import chain, timestep
 from ..names import runDirName
 from ..params import ParamError, requireWritableDir
 from ..study.files import syncDir, writeAtomic
@@ -270,11 +270,11 @@ class Experiment:
         callback alive, first in the chain, so that the first step after O.load runs it, and with it the
         runtime's restore (restored() calls resumeDensityScaling) before Newton moves anything; then it
         sleeps until the next save."""
-        timestep.engine(timestep.GUARD).dead = True
+        chain.engine(timestep.GUARD).dead = True
 
     def beforeSave(self):
         """The runtime's call before O.save: the density guard awake in the saved scene."""
-        guard = timestep.engine(timestep.GUARD)
+        guard = chain.engine(timestep.GUARD)
         if guard is not None:
             guard.dead = False
 
@@ -284,7 +284,7 @@ class Experiment:
 
     def resumeDensityScaling(self):
         """After a restore: Newton scales densities again if this run does (YADE's O.load leaves it off)."""
-        if timestep.engine(timestep.GUARD) is not None:
+        if chain.engine(timestep.GUARD) is not None:
             timestep.enableDensityScaling()
 
     @classmethod

@@ -3,18 +3,14 @@ ballast.params.DENSITY_STEP, checked by checkDensityStep): how a scene is switch
 across O.save / O.load.
 The per-body factors are the C++ core's (pkg/DensityScaling.hpp, through ballast.densityscaling)."""
 from yade import O
-from yade.wrapper import GlobalStiffnessTimeStepper, NewtonIntegrator
+from yade.wrapper import GlobalStiffnessTimeStepper
 
 from .. import _ballast, harvest, runtime
 from ..densityscaling import scaleDensities
+from .chain import engine, insertBeforeNewton, newton
 
 GUARD, SWITCH = 'densityScalingGuard', 'densityScalingSwitch'
 STIFFNESS_UPDATE = 10   # [steps] timeStep stiffness: between two updates of YADE's GlobalStiffnessTimeStepper
-
-
-def engine(label):
-    """The engine with this label in O.engines, or None."""
-    return next((e for e in O.engines if e.label == label), None)
 
 
 def enableDensityScaling():
@@ -25,7 +21,7 @@ def enableDensityScaling():
     makes YADE warn when no stepper is there, so the tests read it, not the runs.)"""
     if engine(SWITCH) is None:
         O.engines = O.engines + [GlobalStiffnessTimeStepper(dead=True, active=False, label=SWITCH)]
-    next(e for e in O.engines if isinstance(e, NewtonIntegrator)).densityScaling = True
+    newton().densityScaling = True
     engine(SWITCH).densityScaling = False  # the setter switched the stepper's on too
 
 
@@ -46,8 +42,6 @@ def startDensityScaling(exp, step, ownStep, others):
 def startStiffnessStep(safety):
     """timeStep 'stiffness': YADE's GlobalStiffnessTimeStepper with the safety factor, every STIFFNESS_UPDATE
     steps, just before NewtonIntegrator; the current O.dt until its first update."""
-    chain = list(O.engines)
-    k = next(i for i, e in enumerate(chain) if isinstance(e, NewtonIntegrator))
-    O.engines = chain[:k] + [GlobalStiffnessTimeStepper(timestepSafetyCoefficient=safety, timeStepUpdateInterval=STIFFNESS_UPDATE,
-                                                        defaultDt=O.dt, label='timeStepper')] + chain[k:]
+    insertBeforeNewton([GlobalStiffnessTimeStepper(timestepSafetyCoefficient=safety, timeStepUpdateInterval=STIFFNESS_UPDATE,
+                                                   defaultDt=O.dt, label='timeStepper')])
     O.dynDt = True

@@ -19,7 +19,7 @@ from yade import O, Vector3, utils
 from yade.wrapper import InterpolatingDirectedForceEngine
 
 from ... import runtime
-from .. import grains
+from .. import chain, grains
 from . import scene
 from .loadcurve import eq8, loadCurve
 
@@ -109,7 +109,7 @@ class PlateLoad(PlateBase):
         if p['Fmin'] > 0:  # at T/2 the force table becomes the cycle between Fmax and Fmin (once, in Python)
             engines.append(runtime.callback(self, 'switchToCycles', virtPeriod=T / 2, virtLast=self.t0,
                                             label=self.SWITCH))
-        scene.insertBeforeNewton(engines)
+        chain.insertBeforeNewton(engines)
 
     def switchToCycles(self):
         p = self.p
@@ -153,7 +153,7 @@ class ServoLoad(PlateBase):
 
     def start(self, p, rig):
         self.seat(p, rig.steel, dynamic=False)
-        scene.insertBeforeNewton([runtime.callback(self, 'step', iterPeriod=self.SERVO_PERIOD, label=self.LABEL)])
+        chain.insertBeforeNewton([runtime.callback(self, 'step', iterPeriod=self.SERVO_PERIOD, label=self.LABEL)])
 
     def force(self):
         return self.contactForce()

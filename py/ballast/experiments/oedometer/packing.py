@@ -16,7 +16,7 @@ from yade.wrapper import Sphere
 from ... import runtime
 from ...geometry import meanCubedDiameterVolume, sphereVolume
 from ...params import requireWritableDir
-from .. import grains
+from .. import chain, grains
 from . import scene
 from .parameters import OWNER, packingKey
 
@@ -242,7 +242,7 @@ class StoredPacking:
         O.dt = self.PREP_DT_SAFETY * utils.PWaveTimeStep()
         if ratio <= 1:
             return
-        newton = scene.newton()
+        newton = chain.newton()
         newton.damping = max(p['prepDamping'], 0.8)
         kn, ks = scene.LAWS[p['law']][2]
         soft = {(i.id1, i.id2): (getattr(i.phys, kn), getattr(i.phys, ks)) for i in O.interactions if i.isReal}

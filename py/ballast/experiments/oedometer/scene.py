@@ -95,14 +95,3 @@ def engines(damping, law):
         InteractionLoop([Ig2_Sphere_Sphere_ScGeom(), Ig2_Facet_Sphere_ScGeom(), Ig2_Wall_Sphere_ScGeom(),
                          Ig2_Box_Sphere_ScGeom()], [ip2()], [law2()]),
         NewtonIntegrator(damping=damping, gravity=GRAVITY, label='newton')]
-
-
-def insertBeforeNewton(engines):
-    """Put engines (a plate's force or control) between the interaction loop and NewtonIntegrator."""
-    chain = list(O.engines)
-    k = next(i for i, e in enumerate(chain) if isinstance(e, NewtonIntegrator))
-    O.engines = chain[:k] + list(engines) + chain[k:]
-
-
-def newton():
-    return next(e for e in O.engines if isinstance(e, NewtonIntegrator))
