@@ -16,6 +16,12 @@ namespace {
 	// Converts obj to a C-contiguous array of dtype (float64 or int64), accepting only the dtype kinds given.
 	np::ndarray asArray(const bp::object& obj, const std::string& name, const char* kinds, const np::dtype& dt)
 	{
+		// what numpy.require would return unchanged, without its Python calls (the engines' every check)
+		bp::extract<np::ndarray> already(obj);
+		if (already.check()) {
+			np::ndarray a = already();
+			if (a.get_dtype() == dt && (a.get_flags() & np::ndarray::C_CONTIGUOUS)) return a;
+		}
 		bp::object numpy = bp::import("numpy");
 		bp::object arr;
 		try {
@@ -69,7 +75,13 @@ std::string shapeOf(const np::ndarray& a)
 	return s + ")";
 }
 
-long sizeOf(const np::ndarray& a) { return bp::len(a.attr("ravel")()); }
+long sizeOf(const np::ndarray& a)
+{
+	long n = 1;
+	for (int i = 0; i < a.get_nd(); ++i)
+		n *= a.shape(i);
+	return n;
+}
 
 np::ndarray asDoubles(const bp::object& obj, const std::string& name)
 {
@@ -120,6 +132,11 @@ np::ndarray boolArray(const std::vector<std::uint8_t>& flags)
 
 double asScalar(const bp::object& obj, const std::string& name)
 {
+	if (PyFloat_Check(obj.ptr())) {  // a Python float: no array needed
+		const double v = PyFloat_AS_DOUBLE(obj.ptr());
+		requireFinite(name, v);
+		return v;
+	}
 	np::ndarray a = asArray(obj, name, "iuf", np::dtype::get_builtin<double>());
 	if (a.get_nd() != 0) throw TypeError(name + ": expected a number, got an array of shape " + shapeOf(a));
 	requireFinite(name, *dptr(a));
