@@ -30,9 +30,10 @@ import zlib
 from yade import O
 
 from .. import runtime
+from ..engines import BallastAbrasionEngine, BallastCrushEngine
 from . import chain, timestep
 from ..names import runDirName
-from ..params import ParamError, requireWritableDir
+from ..params import CRUSH, ParamError, requireWritableDir
 from ..study.files import syncDir, writeAtomic
 from .phases import Phases
 
@@ -176,6 +177,19 @@ class Experiment:
         """Before any work: the results folder can be created and written to."""
         requireWritableDir(self.Parameters.OWNER, 'results', self.p['results'])
 
+    def openRunDirectory(self):
+        """At the start of prepare(): the outputs checked, the run's folder made, run.json 'running'."""
+        if self.out is None:
+            self.checkOutputs()
+            self.dir.create()
+            self.markRunning()
+            self.say('run %s -> %s' % (self.runId, self.out))
+
+    def run(self):
+        """The whole experiment: prepare(), then load() (each experiment's own); returns the summary."""
+        self.prepare()
+        return self.load()
+
     def runUntil(self, condition=None, tEnd=None, phase='run', checkEvery=200, **progress):
         """Step the scene until condition() is true (checked every checkEvery steps in the step loop, so where
         it stops never depends on the machine) or O.time reaches tEnd [s], with progress lines. progress:
@@ -183,6 +197,28 @@ class Experiment:
         if condition is None and tEnd is None:
             raise ParamError('tEnd', '%s.runUntil: give a condition or tEnd [s], else it never ends' % self.NAME)
         self.phases.run(phase, condition, tEnd=tEnd, checkEvery=checkEvery, **progress)
+
+    def addEngines(self, t0):
+        """BallastCrushEngine and BallastAbrasionEngine after NewtonIntegrator, as the parameters say (crush,
+        abrasion and every declaration of the engines the experiment reuses); crushing checked at times
+        t0 + k Tc [s]."""
+        p = self.p
+        extra = []
+        if p['crush']:
+            # every engine parameter the experiment declares (its PARAMS reuse CRUSH's declarations);
+            # the engine scales O.dt with the drop of PWaveTimeStep() after a replacement (eq. 5)
+            own = {k: p[k] for k in CRUSH if k in p}
+            crush = BallastCrushEngine(mask=0, label='crush', scaledPWaveStep=p.scaledPWaveStep(), **p.crushPeriod(),
+                                       **own)
+            # checks at loading times k T_c (not at scene times, which include the preparation): where they fall
+            # in the load cycle is then set by T_c and f alone (docs/oedometer.md, "Crushing period")
+            crush.virtLast = t0
+            extra.append(crush)
+        if p['abrasion']:
+            extra.append(BallastAbrasionEngine(strength=p['strength'], gamma=p['gamma'], rMin=p['rMin'], mask=0,
+                                               iterPeriod=p['abrasionPeriod'], scaledPWaveStep=p.scaledPWaveStep(),
+                                               label='abrasion'))
+        O.engines = O.engines + extra
 
     def say(self, msg):
         self.phases.say(msg)

@@ -103,3 +103,22 @@ def readParams(ap, argv, declaration):
     values = tableValues(declaration)
     values.update({k: v for k, v in parse(ap, argv).items() if v is not None and k in declaration.params})
     return declaration.check(values, text=True)
+
+
+def experiment(ap, argv, declaration, experimentClass):
+    """The experiment of a command line: its parameters read and checked (readParams), built by
+    experimentClass() (a callable giving the class: its module needs YADE) and its outputs checked writable,
+    before any work. A bad value: one line naming the parameter, exit status 2."""
+    from ..params import ParamError
+    from ..study.options import StudyError
+    try:
+        params = readParams(ap, argv, declaration)
+        exp = experimentClass()(parameters=params)   # checked once, by readParams
+        exp.checkOutputs()
+    except ParamError as e:
+        sys.stderr.write('%s: bad parameter %s: %s\n' % (ap.script, e.name, e))
+        sys.exit(2)
+    except StudyError as e:  # a yade-batch table YADE would misread
+        sys.stderr.write('%s: bad table: %s\n' % (ap.script, e))
+        sys.exit(2)
+    return exp

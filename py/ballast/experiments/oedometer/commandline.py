@@ -3,8 +3,6 @@ yade-batch table row (a column per name), every one checked before any work, the
 import argparse
 import sys
 
-from ...params import ParamError
-from ...study.options import StudyError
 from .. import commandline
 from .declaration import DECLARATION
 from .parameters import PARAMS
@@ -43,17 +41,11 @@ def main(argv=None):
             sys.stderr.write('oedometer.py: --rebuild %s: %s\n' % (rebuild, e))
             sys.exit(2)
         return run, run.summary()
-    try:
-        params = readParams(argv)
+
+    def cls():
         from .experiment import Oedometer
-        run = Oedometer(parameters=params)  # checked once, by readParams
-        run.checkOutputs()
-    except ParamError as e:
-        sys.stderr.write('oedometer.py: bad parameter %s: %s\n' % (e.name, e))
-        sys.exit(2)
-    except StudyError as e:  # a yade-batch table YADE would misread
-        sys.stderr.write('oedometer.py: bad table: %s\n' % e)
-        sys.exit(2)
+        return Oedometer
+    run = commandline.experiment(parser(), argv, DECLARATION, cls)
     summary = run.run()
     utils.waitIfBatch()
     return run, summary

@@ -32,10 +32,9 @@ import numpy as np
 from yade import O
 
 from ... import grading, runtime
-from ...engines import BallastAbrasionEngine, BallastCrushEngine
 from ...geometry import sphereVolume
 from ...names import fmtTime
-from ...params import CRUSH, validate
+from ...params import validate
 from ...study.files import writeAtomic
 from .. import grains
 from .. import timestep
@@ -97,11 +96,7 @@ class Oedometer(Experiment):
 
     def prepare(self):
         """The packing (built, or loaded from the store), settled in the cylinder."""
-        if self.out is None:
-            self.checkOutputs()
-            self.dir.create()
-            self.markRunning()
-            self.say('run %s -> %s' % (self.runId, self.out))
+        self.openRunDirectory()
         self.adopt()
         self.rig = self.packing.prepare(self)
         self.adopt()
@@ -184,16 +179,11 @@ class Oedometer(Experiment):
                                            s['deltaMax'] * 1e3, s['nCrushed'], s['nAbraded'], s['steps'], self.out))
         return s
 
-    def run(self):
-        """prepare() and load(): the whole realization."""
-        self.prepare()
-        return self.load()
-
     def startLoading(self):
         """The start of load(): seat the plate, add the engines and the recorders, save the state."""
         p = self.p
         self.loading.start(p, self.rig)
-        self.addEngines()
+        self.addEngines(self.loading.t0)
         if p['timeStep'] == 'stiffness':  # from the contacts' stiffness (YADE), instead of eq. 5's P-wave step
             timestep.startStiffnessStep(p['dtSafety'])
         if p['densityStep'] > 0:
@@ -226,26 +216,6 @@ class Oedometer(Experiment):
         K = sum(i.phys.kn for i in plate.intrs() if i.isReal)
         own = math.sqrt(plate.state.mass / (PLATE_STIFFNESS_MARGIN * K)) if plate.dynamic and K > 0 else None
         timestep.startDensityScaling(self, p['densityStep'], p.scaledPWaveStep(), {self.loading.plate: own})
-
-    def addEngines(self):
-        """BallastCrushEngine and BallastAbrasionEngine after NewtonIntegrator, as the parameters say."""
-        p = self.p
-        extra = []
-        if p['crush']:
-            # every engine parameter the experiment declares (parameters.PARAMS reuses CRUSH's declarations);
-            # the engine scales O.dt with the drop of PWaveTimeStep() after a replacement (eq. 5)
-            own = {k: p[k] for k in CRUSH if k in p}
-            crush = BallastCrushEngine(mask=0, label='crush', scaledPWaveStep=p.scaledPWaveStep(), **p.crushPeriod(),
-                                       **own)
-            # checks at loading times k T_c (not at scene times, which include the preparation): where they fall
-            # in the load cycle is then set by T_c and f alone (docs/oedometer.md, "Crushing period")
-            crush.virtLast = self.loading.t0
-            extra.append(crush)
-        if p['abrasion']:
-            extra.append(BallastAbrasionEngine(strength=p['strength'], gamma=p['gamma'], rMin=p['rMin'], mask=0,
-                                               iterPeriod=p['abrasionPeriod'], scaledPWaveStep=p.scaledPWaveStep(),
-                                               label='abrasion'))
-        O.engines = O.engines + extra
 
     def checkpoint(self):
         """The saver's call (saveEvery): a state at the start of this step."""

@@ -11,12 +11,11 @@ import time
 
 import numpy as np
 from yade import O, Vector3, pack, utils
-from yade.wrapper import Sphere
 
 from ... import runtime
 from ...geometry import meanCubedDiameterVolume, sphereVolume
 from ...params import requireWritableDir
-from .. import chain, grains
+from .. import grains, preparation
 from . import scene
 from .parameters import OWNER, packingKey
 
@@ -28,8 +27,6 @@ class StoredPacking:
     ``prepare(experiment)`` that leaves the grains, the cylinder and the engines in the scene and returns
     the :class:`scene.Rig` (a registered object: ``@ballast.runtime.persistent(name)``)."""
 
-    STIFFEN_TIME = 0.01     # [s] simulated time over which the soft preparation modulus is raised to young
-    PREP_DT_SAFETY = 0.5    # [-] O.dt / PWaveTimeStep() while preparing: the packing does not depend on dtSafety
     CLOUD_SOLID = 0.3       # [-] solid fraction of the falling cloud, low enough for grains to fall freely
     PRESS_STILL = (0.03, 1e-5)   # ([s], [m]): the press ends when the plate moved less than this over that time
     SEAT_STILL = (0.01, 2e-6)    # the same once friction is restored and the force lowered
@@ -37,7 +34,7 @@ class StoredPacking:
 
     def __init__(self):
         self.file, self.reused, self.escaped = None, False, None
-        self._shake = self._stiffen = self._plate = None
+        self._shake = self._plate = None
         self.rig = None  # while building: the scene's cylinder and materials
 
     def state(self):
@@ -135,7 +132,7 @@ class StoredPacking:
             runtime.callback(self, 'shake', iterPeriod=10, dead=True, label='oedoShaker')]
         for c, r in zip(pos, rad):
             O.bodies.append(utils.sphere(tuple(c), float(r), material=self.rig.ballast, mask=scene.GRAIN_MASK))
-        O.dt = self.PREP_DT_SAFETY * utils.PWaveTimeStep()
+        O.dt = preparation.PREP_DT_SAFETY * utils.PWaveTimeStep()
         exp.phases.say('deposit: %d grains (%.1f %% of the cylinder) falling from up to %.3f m, friction %g rad '
                        '(E = %.3g Pa while preparing, dt = %.2e s)' % (len(rad), 100 * p['fill'], top,
                                                                       p['depFriction'], p['prepYoung'], O.dt))
@@ -191,16 +188,7 @@ class StoredPacking:
         return done
 
     def restoreFriction(self, exp):
-        """The grains' friction angle back to `friction`, in the material and in the existing contacts (grain-steel
-        contacts take the smaller of the two, as YADE's FrictPhys does)."""
-        p = exp.p
-        self.rig.ballast.frictionAngle = p['friction']
-        grain = math.tan(p['friction'])
-        steel = math.tan(min(p['friction'], p['steelFriction']))
-        for i in O.interactions:
-            if i.isReal:
-                both = isinstance(O.bodies[i.id1].shape, Sphere) and isinstance(O.bodies[i.id2].shape, Sphere)
-                i.phys.tangensOfFrictionAngle = grain if both else steel
+        preparation.restoreFriction(self.rig.ballast, exp.p['friction'], exp.p['steelFriction'])
 
     def vibrate(self, exp):
         """Horizontal acceleration a cos(w tau) of the cylinder: velocity (a/w) sin(w tau), displacement
@@ -231,38 +219,9 @@ class StoredPacking:
             O.bodies[i].state.vel = Vector3(v, 0, 0)
 
     def stiffen(self, exp):
-        """Back to the true modulus. New contacts take it from the materials at once; the existing
-        ones are stiffened gradually (their stiffnesses are proportional to E under both laws) over STIFFEN_TIME
-        with strong damping, so that the overlaps of the soft packing relax quasi-statically
-        instead of kicking the grains with a suddenly stiffer spring."""
+        """Back to the true modulus (preparation.Stiffener), then let the grains settle."""
         p = exp.p
-        ratio = p['young'] / p['prepYoung']
-        self.rig.ballast.young = p['young']
-        self.rig.steel.young = p['steelYoungRatio'] * p['young']
-        O.dt = self.PREP_DT_SAFETY * utils.PWaveTimeStep()
-        if ratio <= 1:
-            return
-        newton = chain.newton()
-        newton.damping = max(p['prepDamping'], 0.8)
-        kn, ks = scene.LAWS[p['law']][2]
-        soft = {(i.id1, i.id2): (getattr(i.phys, kn), getattr(i.phys, ks)) for i in O.interactions if i.isReal}
-        exp.phases.say('stiffen: E %.3g -> %.3g Pa over %.3g s, dt = %.2e s' % (p['prepYoung'], p['young'],
-                                                                               self.STIFFEN_TIME, O.dt))
-        self._stiffen = (O.time, ratio, soft, kn, ks)
-        O.engines = O.engines + [runtime.callback(self, 'stiffenStep', iterPeriod=100, initRun=True,
-                                                  label='oedoStiffener')]
-        exp.phases.run('stiffen', tEnd=O.time + self.STIFFEN_TIME)
-        O.engines = [e for e in O.engines if e.label != 'oedoStiffener']
-        self._stiffen = (O.time - 2 * self.STIFFEN_TIME, ratio, soft, kn, ks)
-        self.stiffenStep()  # the last step to the full modulus
-        newton.damping = p['prepDamping']
-        exp.phases.run('stiffen', lambda: grains.unbalanced() < 0.02, tEnd=O.time + 0.02, extra=grains.restInfo)
-
-    def stiffenStep(self):
-        t0, ratio, soft, kn, ks = self._stiffen
-        fac = ratio ** min((O.time - t0) / self.STIFFEN_TIME, 1.0)
-        for i in O.interactions:
-            k = soft.get((i.id1, i.id2))
-            if k is not None and i.isReal:
-                setattr(i.phys, kn, k[0] * fac)
-                setattr(i.phys, ks, k[1] * fac)
+        preparation.Stiffener().run(exp, [(self.rig.ballast, p['young']), (self.rig.steel, p['steelYoungRatio'] * p['young'])],
+                                    p['young'] / p['prepYoung'])
+        if p['young'] > p['prepYoung']:
+            exp.phases.run('stiffen', lambda: grains.unbalanced() < 0.02, tEnd=O.time + 0.02, extra=grains.restInfo)

@@ -5,7 +5,6 @@ simulates the fitted model at the measured diameters and fits it again)."""
 import sys
 
 from ...params import ParamError
-from ...study.options import StudyError
 from .. import commandline
 from . import calibration
 from .declaration import DECLARATION
@@ -65,17 +64,11 @@ def main(argv=None):
     if argv[:1] == ['calibrate']:
         return calibrate(argv[1:])
     from yade import utils
-    try:
-        params = commandline.readParams(runParser(), argv, DECLARATION)
+
+    def cls():
         from .experiment import SingleParticle
-        test = SingleParticle(parameters=params)
-        test.checkOutputs()
-    except ParamError as e:
-        sys.stderr.write('single_particle.py: bad parameter %s: %s\n' % (e.name, e))
-        sys.exit(2)
-    except StudyError as e:
-        sys.stderr.write('single_particle.py: bad table: %s\n' % e)
-        sys.exit(2)
+        return SingleParticle
+    test = commandline.experiment(runParser(), argv, DECLARATION, cls)
     test.run()
     utils.waitIfBatch()
     return 0

@@ -130,11 +130,7 @@ class SingleParticle(Experiment):
     def prepare(self):
         """The grains in a row, each touching its two platens, the engines, the time step (eq. 5)."""
         p = self.p
-        if self.out is None:
-            self.checkOutputs()
-            self.dir.create()
-            self.say('run %s -> %s' % (self.runId, self.out))
-            self.markRunning()
+        self.openRunDirectory()
         self.newScene()
         ballast, steel = materials(p, p['young'])
         ip2, law2, _ = LAWS[p['law']]
@@ -192,10 +188,6 @@ class SingleParticle(Experiment):
                   else 'none crushed by maxStrain')
         self.say('done: %d of %d grains crushed, %s; results in %s' % (s['nCrushed'], s['n'], spread, self.out))
         return s
-
-    def run(self):
-        self.prepare()
-        return self.load()
 
     def summary(self):
         """What summary.json holds (outputs.summary: the statistics of the strengths)."""

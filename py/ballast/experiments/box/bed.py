@@ -1,0 +1,137 @@
+"""The box and its ballast bed (docs/box.md, "Set-up"): a steel box of five walls (floor, two ends, two
+sides; YADE's infinite walls), the bed placed in `layers` layers: each a loose cloud of grains (YADE's
+makeCloud, diameters uniform in [dMin, dMax]) falling frictionless onto the layer below, then pressed
+through a plate at layerPressure until it rests; then friction restored and the grains stiffened to
+the true modulus (:mod:`ballast.experiments.preparation`), with the soft modulus prepYoung before."""
+import math
+
+import numpy as np
+from yade import O, Vector3, pack, utils
+
+from ... import runtime
+from ...geometry import meanCubedDiameterVolume, sphereVolume
+from .. import grains, preparation
+from ..oedometer import scene
+
+CLOUD_SOLID = 0.3            # [-] solid fraction of a falling cloud: grains fall freely
+PRESS_STILL = (0.03, 1e-5)   # ([s], [m]): a press ends when its plate moved less than this over that time
+PRESS_TIME = (0.05, 1.0)     # [s] shortest and longest press of a layer
+PLATE_THICKNESS = 0.02       # [m] the press plate's mass: steel of this thickness over the box
+
+
+@runtime.persistent('BoxRig')
+class Rig:
+    """The box's walls (ids: floor, x-, x+, y-, y+), the materials (ballast, steel of the box, the sleeper's)
+    and, once seated, the sleeper's id."""
+
+    def __init__(self, walls, ballast, steel, sleeperMat=None, sleeper=None):
+        self.walls, self.ballast, self.steel, self.sleeperMat, self.sleeper = walls, ballast, steel, sleeperMat, sleeper
+
+    def state(self):
+        return {'walls': list(self.walls), 'ballast': self.ballast.id, 'steel': self.steel.id,
+                'sleeperMat': None if self.sleeperMat is None else self.sleeperMat.id, 'sleeper': self.sleeper}
+
+    @classmethod
+    def fromState(cls, s, ref=None):
+        mat = None if s['sleeperMat'] is None else O.materials[s['sleeperMat']]
+        return cls(s['walls'], O.materials[s['ballast']], O.materials[s['steel']], mat, s['sleeper'])
+
+
+def walls(p, steel):
+    """The floor at z = 0 and the four side walls of the box centred on the z axis."""
+    L, W = p['boxLength'], p['boxWidth']
+    kw = dict(material=steel, color=scene.STEEL_COLOR, mask=scene.STEEL_MASK)
+    return [O.bodies.append(utils.wall(0.0, axis=2, sense=1, **kw)),
+            O.bodies.append(utils.wall(-L / 2, axis=0, sense=1, **kw)),
+            O.bodies.append(utils.wall(L / 2, axis=0, sense=-1, **kw)),
+            O.bodies.append(utils.wall(-W / 2, axis=1, sense=1, **kw)),
+            O.bodies.append(utils.wall(W / 2, axis=1, sense=-1, **kw))]
+
+
+def cloud(p, seed, vSolid, zBottom):
+    """Grains of total volume vSolid [m^3] in a loose cloud over the whole box above zBottom [m]."""
+    rMin, rMax = p['dMin'] / 2, p['dMax'] / 2
+    gap = 0.05 * p['dMin']
+    a, b = p['boxLength'] / 2 - rMax - gap, p['boxWidth'] / 2 - rMax - gap
+    z0 = zBottom + rMax + gap
+    h = 1.5 * vSolid / (CLOUD_SOLID * 4 * a * b)   # makeCloud falls short of CLOUD_SOLID between close walls
+    num = int(math.ceil(1.2 * vSolid / meanCubedDiameterVolume(p['dMin'], p['dMax'])))
+    for attempt in range(6):
+        sp = pack.SpherePack()
+        made = sp.makeCloud((-a, -b, z0), (a, b, z0 + h), rMean=(rMin + rMax) / 2, rRelFuzz=(rMax - rMin) / (rMax + rMin),
+                            num=num, seed=seed)
+        if made == num:
+            break
+        h *= 1.3
+    else:
+        raise RuntimeError('cloud: makeCloud placed %d of %d grains' % (made, num))
+    kept = sorted((c[2], c[0], c[1], r) for c, r in sp)   # the lowest first, until vSolid
+    z, x, y, r = (np.array(v) for v in zip(*kept))
+    n = min(len(r), int(np.searchsorted(np.cumsum(sphereVolume(r)), vSolid)) + 1)
+    return np.column_stack([x[:n], y[:n], z[:n]]), r[:n], float(np.max(z[:n] + r[:n]))
+
+
+def build(exp):
+    """The box, the bed in layers, friction and stiffness restored; returns (Rig, the bed's height [m] under
+    the last press, its porosity [-])."""
+    p = exp.p
+    exp.newScene()
+    ballast, steel = scene.materials(p, p['prepYoung'])
+    ballast.frictionAngle = p['depFriction']
+    rig = Rig(walls(p, steel), ballast, steel)
+    O.engines = scene.engines(p['prepDamping'], p['law'])
+    area, top = p['boxLength'] * p['boxWidth'], 0.0
+    for k in range(p['layers']):
+        pos, rad, cloudTop = cloud(p, p['seed'] * 100 + k, p['solidFraction'] * area * p['bedDepth'] / p['layers'], top)
+        for c, r in zip(pos, rad):
+            O.bodies.append(utils.sphere(tuple(c), float(r), material=ballast, mask=scene.GRAIN_MASK))
+        if k == 0:
+            O.dt = preparation.PREP_DT_SAFETY * utils.PWaveTimeStep()
+        tFall = math.sqrt(2 * (cloudTop - top) / 9.81)
+        exp.phases.say('layer %d of %d: %d grains falling from up to %.3f m' % (k + 1, p['layers'], len(rad), cloudTop))
+        exp.phases.run('deposit', tEnd=O.time + tFall, simSpan=tFall, simStart=O.time, extra=grains.restInfo)
+        top = press(exp, rig, p['layerPressure'] * area)
+        exp.phases.say('layer %d pressed at %.3g kPa: top at %.4f m' % (k + 1, p['layerPressure'] / 1e3, top))
+    escaped = [b.id for b in grains.spheres() if not inside(p, b.state.pos)]
+    for i in escaped:
+        O.bodies.erase(i)
+    preparation.restoreFriction(ballast, p['friction'], p['steelFriction'])
+    preparation.Stiffener().run(exp, [(ballast, p['young']), (steel, p['steelYoungRatio'] * p['young'])],
+                                p['young'] / p['prepYoung'])
+    exp.phases.run('settle', lambda: grains.unbalanced() < 0.02, tEnd=O.time + 0.05, extra=grains.restInfo)
+    r = grains.arrays()[1]
+    porosity = 1 - float(np.sum(sphereVolume(r))) / (area * top)
+    return rig, top, porosity, len(escaped)
+
+
+def inside(p, x):
+    return abs(x[0]) < p['boxLength'] / 2 and abs(x[1]) < p['boxWidth'] / 2 and x[2] > 0
+
+
+def press(exp, rig, force):
+    """A steel plate over the whole box pressed with `force` [N] onto the layer until it rests; removed
+    after. Returns the height of its underside [m] at rest."""
+    p = exp.p
+    x, r, _ = grains.arrays()
+    plate = utils.wall(float(np.max(x[:, 2] + r)), axis=2, sense=-1, material=rig.steel, mask=scene.STEEL_MASK)
+    plate.state.blockedDOFs = 'xyXYZ'
+    plate.state.mass = p['steelDensity'] * p['boxLength'] * p['boxWidth'] * PLATE_THICKNESS
+    plate.state.inertia = Vector3(1, 1, 1)  # a wall has none; its rotations are blocked, but Newton divides by it
+    plate.dynamic = True
+    pid = O.bodies.append(plate)
+    O.forces.setPermF(pid, Vector3(0, 0, -force))
+    hist = []
+    span, tol = PRESS_STILL
+    t0 = O.time
+
+    def still():
+        hist.append((O.time, O.bodies[pid].state.pos[2]))
+        old = [z for t, z in hist if t <= O.time - span]
+        return O.time >= t0 + PRESS_TIME[0] and bool(old) and abs(hist[-1][1] - old[-1]) < tol and \
+            grains.unbalanced() < 0.01
+    exp.phases.run('press', still, tEnd=t0 + PRESS_TIME[1],
+                   extra=lambda: 'plate at %.4f m  %s' % (O.bodies[pid].state.pos[2], grains.restInfo()))
+    top = float(O.bodies[pid].state.pos[2])
+    O.forces.setPermF(pid, Vector3(0, 0, 0))   # a permanent force outlives its body in the force container
+    O.bodies.erase(pid)
+    return top

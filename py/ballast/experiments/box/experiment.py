@@ -1,0 +1,273 @@
+"""The box test as an experiment on the base (docs/box.md): a steel box, a ballast bed placed and
+compacted in layers (:mod:`.bed`), a sleeper section seated on it and loaded cycle after cycle by the
+sine between the seating and the peak load (or a CSV history, :mod:`.loadhistory`), with the crushing
+and abrasion engines of the oedometer and all their options.
+
+    from ballast.experiments.box import BoxTest
+    test = BoxTest(cycles=3)
+    test.run()            # prepare() and load(); writes cycles.csv, samples.csv, grading.csv, crushes.csv, figures
+    test.load(10)         # ten cycles more
+
+The sleeper is a rigid block (a YADE Box) free to settle and, with tilt, to rotate about the box's
+width axis; the load acts at its centre through YADE's InterpolatingDirectedForceEngine (no Python per
+step). Its permanent settlement is read at the end of each cycle (at the seating load), its resilient
+deflection as the largest settlement of the cycle less that.
+"""
+import math
+import os
+import time
+
+import numpy as np
+from yade import O, Vector3, utils
+from yade.wrapper import FrictMat, InterpolatingDirectedForceEngine
+
+from ... import runtime
+from ...engines import BallastAbrasionEngine, BallastCrushEngine
+from ...params import validate
+from .. import chain, grains, timestep
+from ..base import Experiment
+from ..oedometer import scene
+from . import bed, outputs
+from .parameters import OWNER, PARAMS, BoxParameters
+
+LOAD, RECORDER = 'boxLoad', 'boxRecorder'
+SEAT_STILL = (0.01, 2e-6)     # ([s], [m]): seated when the sleeper moved less than this over that time
+SEAT_TIME = (0.02, 0.2)       # [s] shortest and longest seating (a bed of spheres creeps under a sleeper: docs/box.md)
+SLEEPER_STIFFNESS_MARGIN = 2.0  # [-] densityStep: the sleeper's contacts may stiffen this much as grains crush
+
+
+@runtime.persistent('BoxRecorder')
+class Recorder:
+    """Samples the sleeper and the engines `samples` times a cycle (a callback at simulated times) and closes
+    a row of cycles.csv at each cycle's end: the permanent settlement (at the seating load), the resilient
+    deflection, the work of the load over the cycle, crushes and abrasions, the largest fatigue damage."""
+
+    COLUMNS = ('t', 'cycle', 'F', 'Fgrains', 'settlement', 'tilt', 'nCrushed', 'nAbraded')
+    CYCLE_COLUMNS = ('cycle', 't', 'settlement', 'settlementPeak', 'resilient', 'work', 'crushes', 'abrasions',
+                     'nCrushed', 'nAbraded', 'maxDamage', 'nGrains', 'tilt', 'cpuSeconds')
+
+    def __init__(self, sleeper=None, z0=None, t0=None, period=None, mass=None):
+        self.sleeper, self.z0, self.t0, self.period, self.mass = sleeper, z0, t0, period, mass
+        self.samples, self.cycles = [], []   # rows of samples.csv, of cycles.csv
+        self.start = None                    # index in samples of the current cycle's first row
+        self.cpu = None                      # process CPU [s] at the current cycle's start (not saved: per process)
+
+    def state(self):
+        return {k: getattr(self, k) for k in ('sleeper', 'z0', 't0', 'period', 'mass', 'samples', 'cycles', 'start')}
+
+    @classmethod
+    def fromState(cls, s, ref=None):
+        r = cls()
+        for k, v in s.items():
+            setattr(r, k, v)
+        return r
+
+    def underside(self):
+        """Height of the sleeper's underside [m] at its centre."""
+        b = O.bodies[self.sleeper]
+        return b.state.pos[2] - b.shape.extents[2]
+
+    def tilt(self):
+        """The sleeper's rotation about y [rad]."""
+        q = O.bodies[self.sleeper].state.ori
+        axis, angle = q.toAxisAngle()
+        return float(angle * axis[1])
+
+    def applied(self):
+        return -chain.engine(LOAD).force[2]
+
+    def grainsForce(self):
+        """Upward force of the grains on the sleeper [N]: its force container holds the contacts and the applied load."""
+        return O.forces.f(self.sleeper)[2] + self.applied()
+
+    def cycle(self):
+        """Whole cycles since cycling began (a sample at a cycle's end belongs to the cycle it ends)."""
+        return int(math.floor((O.time - self.t0) / self.period + 1e-6))
+
+    def sample(self):
+        """A row of samples.csv; returns the cycle it closed, or 0."""
+        counts = [sum(getattr(e, k) for e in O.engines if isinstance(e, kind)) for kind, k in
+                  ((BallastCrushEngine, 'nCrushed'), (BallastAbrasionEngine, 'nAbraded'))]
+        row = [O.time - self.t0, self.cycle(), self.applied(), self.grainsForce(), self.z0 - self.underside(),
+               self.tilt()] + counts
+        self.samples.append(row)
+        if self.start is None:
+            self.start, self.cpu = len(self.samples) - 1, time.process_time()
+        elif row[1] > self.samples[self.start][1]:   # a cycle ended at this sample
+            self.closeCycle(len(self.samples) - 1)
+            self.start = len(self.samples) - 1
+            return int(row[1])
+        return 0
+
+    def closeCycle(self, end):
+        rows = np.array(self.samples[self.start:end + 1], dtype=float)
+        F, s = rows[:, 2], rows[:, 4]
+        crush = [e for e in O.engines if isinstance(e, BallastCrushEngine)]
+        n = int(rows[-1, 1])
+        self.cycles.append([n, rows[-1, 0], s[-1], float(np.max(s)), float(np.max(s) - s[-1]),
+                            float(np.sum(0.5 * (F[1:] + F[:-1]) * np.diff(s))),
+                            int(rows[-1, 6] - rows[0, 6]), int(rows[-1, 7] - rows[0, 7]), int(rows[-1, 6]),
+                            int(rows[-1, 7]), max([e.maxDamage for e in crush], default=0.0), len(grains.spheres()),
+                            rows[-1, 5], time.process_time() - self.cpu if self.cpu is not None else math.nan])
+        self.cpu = time.process_time()
+
+
+@runtime.persistent('BoxTest')
+class BoxTest(Experiment):
+    """A sleeper section on a crushable ballast bed in a box under repeated loads. Keyword arguments: any
+    parameter of :data:`ballast.experiments.box.parameters.PARAMS`, or parameters=check(...)."""
+
+    NAME = 'box'
+    Parameters = BoxParameters
+    REOPEN_PARAMS = ('results', 'runId', 'progress', 'vtk', 'cycles')
+
+    def __init__(self, parameters=None, **params):
+        self.rig = self.recorder = None
+        self.bedTop = self.porosity = None
+        self.nEscaped, self.initial, self.gradings, self.frames = 0, None, [], []
+        Experiment.__init__(self, parameters, **params)
+
+    def pieces(self):
+        return Experiment.pieces(self) + [self.rig, self.recorder]
+
+    # ------------------------------------------------------------------ the experiment
+    def prepare(self):
+        """The box, the bed in layers and the sleeper seated on it under the seating load."""
+        self.openRunDirectory()
+        self.rig, self.bedTop, self.porosity, self.nEscaped = bed.build(self)
+        self.adopt()
+        self.seat()
+        return self
+
+    def seat(self):
+        """The sleeper on the highest grain under its footprint, the engines, the time step, the seating load."""
+        p, rig = self.p, self.rig
+        x, r, m = grains.arrays()
+        w, h, L = p['sleeperWidth'], p['sleeperHeight'], p.sleeperLength()
+        foot = np.abs(x[:, 0]) < w / 2 + r
+        z0 = float(np.max(x[foot, 2] + r[foot]))
+        rig.sleeperMat = FrictMat(young=p['steelYoungRatio'] * p['young'], poisson=p['steelPoisson'],
+                                  frictionAngle=p['sleeperFriction'], density=p['sleeperMass'] / (w * h * L),
+                                  label='sleeper')
+        O.materials.append(rig.sleeperMat)
+        b = utils.box((0, 0, z0 + h / 2), (w / 2, L / 2, h / 2), material=rig.sleeperMat, color=(.5, .5, .45),
+                      mask=scene.STEEL_MASK)
+        b.state.blockedDOFs = 'xyXYZ'   # seated level (as placed on a levelled bed); tilt frees Y once cycling starts
+        b.state.isDamped = False  # the load on it is what acts on it, as on the oedometer's plate
+        rig.sleeper = O.bodies.append(b)
+        chain.newton().damping = p['damping']
+        history = p.history()
+        chain.insertBeforeNewton([InterpolatingDirectedForceEngine(
+            ids=[rig.sleeper], times=[O.time, O.time + 1.0], magnitudes=[history.seat, history.seat],
+            direction=Vector3(0, 0, -1), wrap=True, label=LOAD)])
+        O.dt = p['dtSafety'] * utils.PWaveTimeStep()
+        self.say('seat: sleeper %.3g x %.3g x %.3g m, %.4g kg, on the bed at %.4f m (%d grains, porosity %.3f), %g N'
+                 % (w, L, h, p['sleeperMass'], z0, len(r), self.porosity, history.seat))
+        hist, t0 = [], O.time
+
+        def still():
+            hist.append((O.time, O.bodies[rig.sleeper].state.pos[2]))
+            old = [z for t, z in hist if t <= O.time - SEAT_STILL[0]]
+            return O.time >= t0 + SEAT_TIME[0] and bool(old) and abs(hist[-1][1] - old[-1]) < SEAT_STILL[1]
+        self.runUntil(still, tEnd=t0 + SEAT_TIME[1], phase='seat', checkEvery=100)
+        self.recorder = Recorder(rig.sleeper, None, None, history.period, float(np.sum(grains.arrays()[2])))
+        self.adopt()
+
+    def startCycling(self):
+        """The load cycle from now on, the crushing and abrasion engines, the recorder, the fast-step options, the
+        first state saved. The seating ran without the engines: the bed at the start of cycling is the reference
+        of the mass ledger and the gradings."""
+        p, rec = self.p, self.recorder
+        rec.t0, rec.z0 = O.time, rec.underside()
+        self.addEngines(rec.t0)
+        history = p.history()
+        if p['tilt']:
+            O.bodies[rec.sleeper].state.blockedDOFs = 'xyXZ'
+        times, forces = history.table()
+        load = chain.engine(LOAD)
+        load.times, load.magnitudes = [rec.t0 + t for t in times], forces
+        O.engines = O.engines + [runtime.callback(self, 'sample', virtPeriod=history.period / p['samples'],
+                                                  virtLast=rec.t0, initRun=True, label=RECORDER)]
+        if p['densityStep'] > 0:
+            s = O.bodies[rec.sleeper]
+            K = sum(i.phys.kn for i in s.intrs() if i.isReal)
+            own = math.sqrt(s.state.mass / (SLEEPER_STIFFNESS_MARGIN * K)) if K > 0 else None
+            timestep.startDensityScaling(self, p['densityStep'], p.scaledPWaveStep(), {rec.sleeper: own})
+        if p['timeStep'] == 'stiffness':
+            timestep.startStiffnessStep(p['dtSafety'])
+        x, r, m = grains.arrays()
+        self.initial = {'massInitial': float(np.sum(m)), 'nGrainsInitial': len(r), 'diameters': (2 * r).tolist(),
+                        'masses': m.tolist(), 'zBase': rec.z0, 'ids': [b.id for b in grains.spheres()]}
+        self.gradings = [outputs.grading(self, 0)]
+        self.frames = []
+        if p['vtk']:
+            outputs.writeFrame(self, 0)
+        self.save(os.path.join(self.out, 'state-start.yade.gz'))
+
+    def sample(self):
+        """The recorder's sample (a callback at simulated times); after the cycles of the 1-2-5 series (1, 2, 5,
+        10, 20, ...) the grading and a VTK frame."""
+        k = self.recorder.sample()
+        if k and outputs.gradedCycle(k):
+            self.grade(k)
+
+    def grade(self, k):
+        """The grading (and with vtk a frame) after cycle k, once."""
+        if all(g['cycle'] != k for g in self.gradings):
+            self.gradings.append(outputs.grading(self, k))
+            if self.p['vtk']:
+                outputs.writeFrame(self, k)
+
+    def cyclesDone(self):
+        return len(self.recorder.cycles) if self.recorder is not None else 0
+
+    def load(self, cycles=None):
+        """Run `cycles` more load cycles (default the parameter's), then write every output and save the
+        state. Returns the summary."""
+        p = self.p
+        n = p['cycles'] if cycles is None else validate(OWNER + '.load', {'cycles': PARAMS['cycles']}, 'cycles', cycles)
+        if self.recorder is None or self.recorder.t0 is None:
+            if self.recorder is None:
+                self.prepare()
+            self.startCycling()
+        if self.out is None:   # a reopened run writes into a folder of its own
+            self.dir.create()
+            self.markRunning(continues=self.dir.previous)
+            self.say('run %s goes on from %s -> %s' % (self.runId, self.dir.previous, self.out))
+        rec = self.recorder
+        target = self.cyclesDone() + n
+        tEnd = rec.t0 + target * rec.period
+        self.say('load: %d cycle(s) of %s, %.4g-%.4g N, %.3g s each, dt = %.3g s (%.3g steps a cycle)' % (
+            n, p.history().source, p.history().seat, p.history().peak, rec.period, O.dt, rec.period / O.dt))
+
+        self.runUntil(lambda: self.cyclesDone() >= target, tEnd=tEnd + 2 * rec.period / p['samples'], phase='load',
+                      checkEvery=50, simSpan=tEnd - O.time, simStart=O.time,
+                      extra=lambda: 'cycle %d of %d, settlement %.2f mm, %d crushed, %d abraded' % (
+                          self.cyclesDone(), target, 1e3 * (rec.samples[-1][4] if rec.samples else 0),
+                          rec.samples[-1][6] if rec.samples else 0, rec.samples[-1][7] if rec.samples else 0))
+        k = self.cyclesDone()
+        self.grade(k)
+        self.save(os.path.join(self.out, 'state-end.yade.gz'))
+        s = outputs.write(self)
+        self.markFinished(summary='summary.json')
+        self.say('done: %d cycles, settlement %.2f mm (resilient %.3f mm), %d crushed, %d abraded; results in %s' % (
+            k, 1e3 * s['settlement'], 1e3 * s['resilient'], s['nCrushed'], s['nAbraded'], self.out))
+        return s
+
+    def summary(self):
+        return outputs.summary(self)
+
+    # ------------------------------------------------------------------ saving
+    def state(self):
+        return dict(self.baseState(), rig=runtime.ref(self.rig), recorder=runtime.ref(self.recorder),
+                    bedTop=self.bedTop, porosity=self.porosity, nEscaped=self.nEscaped, initial=self.initial,
+                    gradings=self.gradings, frames=self.frames)
+
+    @classmethod
+    def fromState(cls, s, ref):
+        exp = cls.__new__(cls)
+        exp.setBaseState(s, ref)
+        exp.rig, exp.recorder = ref(s['rig']), ref(s['recorder'])
+        for k in ('bedTop', 'porosity', 'nEscaped', 'initial', 'gradings', 'frames'):
+            setattr(exp, k, s[k])
+        return exp

@@ -1,0 +1,181 @@
+"""What the box test writes (docs/box.md, "Outputs"), in <results>/<run id>/:
+
+* cycles.csv     a row per cycle: permanent settlement at its end [m], largest settlement in it, resilient
+                 deflection, work of the load over it [J], crushes, abrasions, the largest fatigue damage
+* samples.csv    `samples` rows a cycle: applied load and the grains' force on the sleeper [N], settlement
+                 [m], tilt [rad], crushes and abrasions so far
+* grading.csv    percentage passing each sieve (grading.SIEVES_MM) after cycles 0, 1, 2, 5, 10, 20, ... and
+                 the last, with Marsal's B_g, Hardin's B_r and Indraratna's BBI against cycle 0
+* crushes.csv    every crush: time, cycle, position, radius, depth below the sleeper's underside, zone
+* zones.csv      crushes by zone (under the sleeper, beside it, at the walls) and depth band
+* summary.json   the run: settlement, resilient deflection, crushes, where they were, the mass ledger, CPU
+* settlement.png settlement and resilient deflection against N (log N); breakage.png the crushes over the
+                 box's section with the sleeper; grading.png the gradings
+* boxes.pvd      with vtk: grains, contacts and the sleeper and box at the graded cycles (ParaView)
+"""
+import json
+import math
+import os
+
+import numpy as np
+import pandas as pd
+from yade import O
+
+from ... import grading as gr
+from ...engines import BallastAbrasionEngine, BallastCrushEngine
+from ...study.files import saveFigure, writeAtomic
+from .. import grains
+from ..oedometer.outputs import _array, _unstructured, writeContactsVtu, writePvd
+from . import zones
+
+
+def gradedCycle(k):
+    """Cycles whose grading is read: 1, 2, 5 times the powers of ten."""
+    e = 10 ** int(math.floor(math.log10(k))) if k > 0 else 1
+    return k in (e, 2 * e, 5 * e)
+
+
+def engines():
+    return [e for e in O.engines if isinstance(e, (BallastCrushEngine, BallastAbrasionEngine))]
+
+
+def massLost():
+    return float(sum(e.massLost for e in engines()))
+
+
+def grading(exp, cycle):
+    """The grading now: {'cycle', 'passing' [%] per sieve, 'Bg', 'Br', 'BBI'} against the start of cycling."""
+    r, m = grains.arrays()[1:]
+    fines = massLost() if exp.p['lostAsFines'] else 0.0
+    before = gr.passing(exp.initial['diameters'], exp.initial['masses'])
+    now = gr.passing(2 * r, m, fines=fines)
+    return {'cycle': cycle, 'passing': now.tolist(), 'Bg': float(gr.marsal(before, now)),
+            'Br': float(gr.hardin(before, now)), 'BBI': float(gr.bbi(before, now))}
+
+
+def crushes(exp):
+    """Every crush as a DataFrame: t [s] since cycling began, cycle, x, y, z [m], radius [m], depth [m] below the
+    sleeper's underside at the start, zone."""
+    rec, p = exp.recorder, exp.p
+    ev = [e for eng in O.engines if isinstance(eng, BallastCrushEngine) for e in eng.events]
+    t = np.array([e['t'] - rec.t0 for e in ev])
+    xyz = np.array([e['pos'] for e in ev]).reshape(-1, 3)
+    df = pd.DataFrame({'t': t, 'cycle': np.floor(t / rec.period).astype(int) + 1 if len(ev) else [], 'id': [e['id'] for e in ev],
+                       'x': xyz[:, 0], 'y': xyz[:, 1], 'z': xyz[:, 2], 'radius': [e['radius'] for e in ev],
+                       'depth': exp.initial['zBase'] - xyz[:, 2]})
+    df['zone'] = zones.zoneOf(df.x, df.y, **p.geometry())
+    return df
+
+
+def summary(exp):
+    p, rec = exp.p, exp.recorder
+    cyc = pd.DataFrame(rec.cycles, columns=rec.CYCLE_COLUMNS)
+    c = crushes(exp)
+    first = exp.initial['nGrainsInitial']
+    original = len(set(exp.initial['ids']) & {int(i) for i in c.id})   # grains of the bed at the start that crushed
+    x, r, m = grains.arrays()
+    lost = massLost()
+    wall, cpu = exp.seconds()
+    n = len(cyc)
+    where = zones.localCharacter(c.x, c.y, c.z, exp.initial['zBase'], original, first, p.geometry())
+    return {
+        'experiment': exp.NAME, 'runId': exp.runId, 'params': dict(p), 'cycles': n,
+        'settlement': float(cyc.settlement.iloc[-1]) if n else 0.0,
+        'resilient': float(cyc.resilient.iloc[-1]) if n else 0.0,
+        'settlementFirstCycle': float(cyc.settlement.iloc[0]) if n else 0.0,
+        'nCrushed': int(sum(e.nCrushed for e in engines() if isinstance(e, BallastCrushEngine))),
+        'nAbraded': int(sum(e.nAbraded for e in engines() if isinstance(e, BallastAbrasionEngine))),
+        'maxDamage': float(cyc.maxDamage.max()) if n else 0.0,
+        'workPerCycleMean': float(cyc.work.mean()) if n else 0.0,
+        'nGrainsInitial': first, 'nGrains': len(r), 'porosity': exp.porosity, 'bedTop': exp.bedTop,
+        'nEscaped': exp.nEscaped, 'loadSource': p.history().source, 'loadPeriod': rec.period,
+        'seatLoad': p.history().seat, 'peakLoad': p.history().peak,
+        'massInitial': exp.initial['massInitial'], 'massGrains': float(np.sum(m)), 'massLost': lost,
+        'massLedgerError': float(np.sum(m)) + lost - exp.initial['massInitial'],
+        'local': where, 'zones': zones.table(c.x, c.y, c.z, exp.initial['zBase'], p.geometry()),
+        'gradings': [{k: g[k] for k in ('cycle', 'Bg', 'Br', 'BBI')} for g in exp.gradings],
+        'dt': O.dt, 'steps': O.iter, 'wallSeconds': wall, 'cpuSeconds': cpu,
+        'cpuSecondsPerCycle': float(np.nanmedian(cyc.cpuSeconds)) if n and cyc.cpuSeconds.notna().any() else math.nan,
+        'stepsPerCycle': rec.period / O.dt}
+
+
+def write(exp):
+    """Every output file; returns the summary."""
+    rec, out = exp.recorder, exp.out
+    s = summary(exp)
+    files = {'cycles.csv': pd.DataFrame(rec.cycles, columns=rec.CYCLE_COLUMNS),
+             'samples.csv': pd.DataFrame(rec.samples, columns=rec.COLUMNS), 'crushes.csv': crushes(exp)}
+    g = pd.DataFrame([dict({'cycle': x['cycle'], 'Bg': x['Bg'], 'Br': x['Br'], 'BBI': x['BBI']},
+                           **{'P%g' % a: v for a, v in zip(gr.SIEVES_MM, x['passing'])}) for x in exp.gradings])
+    files['grading.csv'] = g
+    z = s['zones']
+    files['zones.csv'] = pd.DataFrame([{'depthTop': a, 'depthBottom': b, **{n: z[n][k] for n in zones.ZONES}}
+                                       for k, (a, b) in enumerate(z['bands'])])
+    for name, df in files.items():
+        writeAtomic(os.path.join(out, name), df.to_csv(index=False, float_format='%.9g'))
+    writeAtomic(os.path.join(out, 'summary.json'), json.dumps(s, indent=1) + '\n')
+    figures(exp, files)
+    if exp.frames:
+        writePvd(os.path.join(out, 'boxes.pvd'), exp.frames)
+    return s
+
+
+def figures(exp, files):
+    import matplotlib
+    matplotlib.use('Agg')
+    import matplotlib.pyplot as plt
+    out, p = exp.out, exp.p
+    cyc = files['cycles.csv']
+    fig, ax = plt.subplots(figsize=(6.4, 4.2))
+    if len(cyc):
+        ax.semilogx(cyc.cycle, 1e3 * cyc.settlement, 'o-', ms=3, label='permanent settlement (at the seating load)')
+        ax.semilogx(cyc.cycle, 1e3 * cyc.resilient, 's--', ms=3, label='resilient deflection')
+    ax.set_xlabel('load cycles N')
+    ax.set_ylabel('sleeper displacement [mm]')
+    ax.set_title('Box test: %.3g-%.3g kN, %s' % (p.history().seat / 1e3, p.history().peak / 1e3, exp.runId), fontsize=9)
+    ax.grid(True, which='both', alpha=0.3)
+    ax.legend(fontsize=8)
+    saveFigure(fig, os.path.join(out, 'settlement.png'))
+    c = files['crushes.csv']
+    fig, ax = plt.subplots(figsize=(7.0, 3.8))
+    L, w, zb = p['boxLength'], p['sleeperWidth'], exp.initial['zBase']
+    ax.plot([-L / 2, -L / 2, L / 2, L / 2], [zb + 0.05, 0, 0, zb + 0.05], 'k-', lw=1)
+    ax.add_patch(plt.Rectangle((-w / 2, zb), w, p['sleeperHeight'] / 2, color='0.6'))
+    if len(c):
+        sc = ax.scatter(c.x, c.z, s=8 + 0.4 * (1e3 * c.radius) ** 1.5, c=c.cycle, cmap='viridis', edgecolors='k', lw=0.3)
+        fig.colorbar(sc, ax=ax, label='cycle')
+    ax.set_aspect('equal')
+    ax.set_xlabel('x along the track [m]')
+    ax.set_ylabel('z [m]')
+    ax.set_title('Where the grains broke: %d crushes (side view, all y)' % len(c), fontsize=9)
+    saveFigure(fig, os.path.join(out, 'breakage.png'))
+    g = files['grading.csv']
+    fig, ax = plt.subplots(figsize=(6.0, 4.2))
+    for _, row in g.iterrows():
+        ax.semilogx(gr.SIEVES_MM, [row['P%g' % a] for a in gr.SIEVES_MM], '-o', ms=2, label='after %d cycles' % row.cycle)
+    ax.set_xlabel('sieve [mm]')
+    ax.set_ylabel('passing [% by mass]')
+    ax.grid(True, which='both', alpha=0.3)
+    ax.legend(fontsize=7)
+    saveFigure(fig, os.path.join(out, 'grading.png'))
+
+
+def writeFrame(exp, cycle):
+    """VTK files of the grains, the contacts and the sleeper and box at this cycle; a frame of boxes.pvd."""
+    out = os.path.join(exp.out, 'vtk')
+    os.makedirs(out, exist_ok=True)
+    x, r, m = grains.arrays()
+    n = len(r)
+    names = ['grains-%06d.vtu' % cycle, 'contacts-%06d.vtu' % cycle, 'sleeper-%06d.vtu' % cycle]
+    _unstructured(os.path.join(out, names[0]), x, np.arange(n), np.arange(1, n + 1), np.ones(n, dtype=int),
+                  _array('radius', r) + _array('mass', m))
+    writeContactsVtu(os.path.join(out, names[1]))
+    b = O.bodies[exp.rig.sleeper]
+    e = b.shape.extents
+    corners = [b.state.pos + b.state.ori * np.multiply(e, s) for s in
+               [(-1, -1, -1), (1, -1, -1), (1, 1, -1), (-1, 1, -1), (-1, -1, 1), (1, -1, 1), (1, 1, 1), (-1, 1, 1)]]
+    L, W = exp.p['boxLength'] / 2, exp.p['boxWidth'] / 2
+    floor = [(-L, -W, 0), (L, -W, 0), (L, W, 0), (-L, W, 0)]
+    pts = np.array([tuple(c) for c in corners] + floor)
+    _unstructured(os.path.join(out, names[2]), pts, list(range(12)), [8, 12], [12, 9])   # VTK_HEXAHEDRON, VTK_QUAD
+    exp.frames.append([O.time - exp.recorder.t0] + ['vtk/' + k for k in names])

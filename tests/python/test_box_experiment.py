@@ -1,0 +1,109 @@
+"""ballast.experiments.box: the box test in YADE on a small box (about 250 grains of 20-30 mm, soft
+grains for a long step, 40 Hz): the sleeper at rest carries the applied load and its weight; a short run
+end to end writes every output, its mass ledger is exact, its crushes are all mapped, its cycles and
+gradings are where they should be; a saved state reopens and goes on; the command line."""
+import json
+import os
+import subprocess
+
+import numpy as np
+import pandas as pd
+import pytest
+
+pytest.importorskip('yade')
+from ballast.experiments.box import BoxTest  # noqa: E402
+from ballast.experiments.box.zones import ZONES  # noqa: E402
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+SMALL = dict(boxLength=0.3, boxWidth=0.12, bedDepth=0.1, layers=2, sleeperWidth=0.1, sleeperHeight=0.05, sleeperMass=5,
+             dMin=0.02, dMax=0.03, young=3e9, prepYoung=3e8, f=40, seatLoad=300, peakLoad=4000, cycles=3, ft0=3.5e4,
+             rMin=0.008, strength=1.5e10, progress=60)
+TOL_EQUILIBRIUM = 0.02   # [-] the grains' force on the sleeper, averaged over 2000 steps, against load + weight:
+#                          the sleeper still creeps into the bed of spheres at about 3 mm/s (m a ~ 1e-3 of it)
+G = 9.81
+
+
+@pytest.fixture(scope='module')
+def run(tmp_path_factory):
+    test = BoxTest(results=str(tmp_path_factory.mktemp('box')), runId='small', **SMALL)
+    summary = test.run()
+    return test, summary
+
+
+def test_the_seated_sleeper_carries_the_applied_load_and_its_weight(tmp_path):
+    from yade import O
+    test = BoxTest(results=str(tmp_path), crush=False, abrasion=False, **SMALL).prepare()
+    rec = test.recorder
+    F = []
+    for _ in range(20):
+        O.run(100, True)
+        F.append(rec.grainsForce())
+    assert rec.applied() == pytest.approx(300.0, rel=1e-12)
+    assert np.mean(F) == pytest.approx(300.0 + 5 * G, rel=TOL_EQUILIBRIUM)
+    assert O.bodies[rec.sleeper].state.mass == pytest.approx(5.0, rel=1e-12)
+
+
+def test_a_short_run_writes_every_output(run):
+    test, s = run
+    for name in ('cycles.csv', 'samples.csv', 'grading.csv', 'crushes.csv', 'zones.csv', 'summary.json',
+                 'settlement.png', 'breakage.png', 'grading.png', 'state-start.yade.gz', 'state-end.yade.gz'):
+        assert os.path.isfile(os.path.join(test.out, name)), name
+    cyc = pd.read_csv(os.path.join(test.out, 'cycles.csv'))
+    assert list(cyc.cycle) == [1, 2, 3] and s['cycles'] == 3
+    assert np.allclose(cyc.t, [0.025, 0.05, 0.075], atol=0.025 / SMALL.get('samples', 100) + 1e-4)
+    assert s['settlement'] == pytest.approx(cyc.settlement.iloc[-1], rel=1e-8)
+    samples = pd.read_csv(os.path.join(test.out, 'samples.csv'))
+    # the applied load is the sine between the seat and the peak at every sample
+    tau = np.mod(samples.t, 0.025)
+    assert np.allclose(samples.F, 300 + 3700 * 0.5 * (1 - np.cos(2 * np.pi * 40 * tau)), atol=4000 * 1e-3)
+    assert (cyc.resilient >= 0).all() and (cyc.settlementPeak >= cyc.settlement - 1e-12).all()
+    with open(os.path.join(test.out, 'summary.json')) as fh:
+        assert json.load(fh)['nCrushed'] == s['nCrushed']
+
+
+def test_the_mass_ledger_is_exact(run):
+    test, s = run
+    assert s['nCrushed'] > 0, 'the small box is meant to crush a few grains'
+    assert abs(s['massLedgerError']) <= 1e-12 * s['massInitial']
+    assert s['massGrains'] + s['massLost'] == pytest.approx(s['massInitial'], rel=1e-12)
+
+
+def test_every_crush_is_mapped_once(run):
+    test, s = run
+    c = pd.read_csv(os.path.join(test.out, 'crushes.csv'))
+    assert len(c) == s['nCrushed'] and set(c.zone) <= set(ZONES)
+    assert sum(sum(s['zones'][z]) for z in ZONES) == s['nCrushed']
+    z = pd.read_csv(os.path.join(test.out, 'zones.csv'))
+    assert int(z[list(ZONES)].to_numpy().sum()) == s['nCrushed']
+    assert (c.cycle >= 1).all() and (c.cycle <= 3).all()
+    assert 0 < s['local']['crushedShare'] <= s['nCrushed'] / s['nGrainsInitial']
+
+
+def test_gradings_after_the_graded_cycles(run):
+    test, s = run
+    g = pd.read_csv(os.path.join(test.out, 'grading.csv'))
+    assert list(g.cycle) == [0, 1, 2, 3]   # 1, 2 of the 1-2-5 series and the last
+    assert g.loc[0, 'Bg'] == 0 and g.loc[0, 'BBI'] == 0
+    assert (np.diff(g.Bg) >= -1e-12).all() and g.Bg.iloc[-1] > 0   # grains crushed: the grading moved
+
+
+def test_a_saved_state_reopens_and_goes_on(run, tmp_path):
+    test, s = run
+    again = BoxTest.reopen(os.path.join(test.out, 'state-end.yade.gz'), results=str(tmp_path))
+    s2 = again.load(1)
+    cyc = pd.read_csv(os.path.join(again.out, 'cycles.csv'))
+    old = pd.read_csv(os.path.join(test.out, 'cycles.csv'))
+    assert list(cyc.cycle) == [1, 2, 3, 4] and s2['cycles'] == 4
+    pd.testing.assert_frame_equal(cyc.iloc[:3].drop(columns='cpuSeconds'), old.drop(columns='cpuSeconds'))
+    assert s2['nCrushed'] >= s['nCrushed'] and abs(s2['massLedgerError']) <= 1e-12 * s2['massInitial']
+
+
+def test_the_command_line_refuses_a_bad_value(tmp_path):
+    script = os.path.join(ROOT, 'scripts', 'box_test.py')
+    env = dict(os.environ, OMP_NUM_THREADS='1')
+    bad = subprocess.run(['yade', '-n', '-x', script, '--seatLoad', '5e4', '--results', str(tmp_path)],
+                         capture_output=True, text=True, timeout=300, env=env, cwd=str(tmp_path))
+    assert bad.returncode == 2 and 'bad parameter seatLoad: BoxTest: seatLoad = 50000.0 is not allowed' in bad.stderr
+    assert not os.listdir(str(tmp_path))   # refused before any work: nothing written
+    helped = subprocess.run(['yade', '-n', '-x', script, '--help'], capture_output=True, text=True, timeout=300, env=env)
+    assert '--loadFile' in helped.stdout and '--sleeperMass' in helped.stdout
