@@ -55,24 +55,26 @@ class Stiffener:
             return
         newton = chain.newton()
         newton.damping = max(p['prepDamping'], 0.8)
-        kn, ks = scene.LAWS[p['law']][2]
-        soft = {(i.id1, i.id2): (getattr(i.phys, kn), getattr(i.phys, ks)) for i in O.interactions if i.isReal}
+        # the stiffnesses that scale with E: the law's, and with rolling resistance the rolling and twisting ones
+        attrs = scene.LAWS[p['law']][2] + (('kr', 'ktw') if scene.rolling(p) else ())
+        soft = {(i.id1, i.id2): [(a, getattr(i.phys, a)) for a in attrs if hasattr(i.phys, a)]
+                for i in O.interactions if i.isReal}
         exp.phases.say('stiffen: E %.3g -> %.3g Pa over %.3g s, dt = %.2e s' % (p['prepYoung'], p['young'],
                                                                                STIFFEN_TIME, O.dt))
-        self._ramp = (O.time, ratio, soft, kn, ks)
+        self._ramp = (O.time, ratio, soft)
         O.engines = O.engines + [runtime.callback(self, 'step', iterPeriod=100, initRun=True, label=STIFFENER)]
         exp.phases.run('stiffen', tEnd=O.time + STIFFEN_TIME)
         O.engines = [e for e in O.engines if e.label != STIFFENER]
-        self._ramp = (O.time - 2 * STIFFEN_TIME, ratio, soft, kn, ks)
+        self._ramp = (O.time - 2 * STIFFEN_TIME, ratio, soft)
         self.step()  # the last step to the full modulus
         newton.damping = p['prepDamping']
         runtime.unregister(self)
 
     def step(self):
-        t0, ratio, soft, kn, ks = self._ramp
+        t0, ratio, soft = self._ramp
         fac = ratio ** min((O.time - t0) / STIFFEN_TIME, 1.0)
         for i in O.interactions:
             k = soft.get((i.id1, i.id2))
             if k is not None and i.isReal:
-                setattr(i.phys, kn, k[0] * fac)
-                setattr(i.phys, ks, k[1] * fac)
+                for a, v in k:
+                    setattr(i.phys, a, v * fac)

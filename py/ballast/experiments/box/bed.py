@@ -79,7 +79,7 @@ def build(exp):
     ballast, steel = scene.materials(p, p['prepYoung'])
     ballast.frictionAngle = p['depFriction']
     rig = Rig(walls(p, steel), ballast, steel)
-    O.engines = scene.engines(p['prepDamping'], p['law'])
+    O.engines = scene.engines(p['prepDamping'], p['law'], scene.rolling(p))
     area, top = p['boxLength'] * p['boxWidth'], 0.0
     for k in range(p['layers']):
         pos, rad, cloudTop = cloud(p, p['seed'] * 100 + k, p['solidFraction'] * area * p['bedDepth'] / p['layers'], top)

@@ -8,7 +8,7 @@ import os
 
 from ...params import (INT32_MAX, NUMBER_POSITIVE, Param, Parameters, anyText, between, boolean,
                        checkDensityStep, flag, intBetween, positive, positiveInt, text)
-from ..oedometer.parameters import PARAMS as OEDOMETER
+from ..oedometer.parameters import PARAMS as OEDOMETER, checkRolling
 from .loadhistory import LoadHistory, LoadHistoryError
 
 OWNER = 'BoxTest'
@@ -53,10 +53,15 @@ PARAMS = dict({
     'cycles': Param(10, '-', 'load cycles of one load()', positiveInt, 'an integer >= 1'),
     'samples': Param(100, '-', 'rows of samples.csv per cycle (the settlement, the load and the work per cycle are '
                      'read from them)', intBetween(20, 100000), 'an integer in [20, 100000]'),
+    # the paper's spheres roll freely: under a sleeper they roll aside and it punches into the bed (docs/box.md)
+    'rollingFriction': OEDOMETER['rollingFriction'].withDefault(0.3, OEDOMETER['rollingFriction'].doc.replace(
+        "0: none, the paper's spheres", "0: none, the paper's spheres (which let the sleeper punch in); 0.3 by default "
+        "here")),
     'vtk': Param(False, '-', 'VTK frames (grains, contacts, the sleeper and the box) at the cycles the grading is read '
                  '(boxes.pvd)', boolean, '0 or 1', flag),
 }, **{k: OEDOMETER[k] for k in (
     'dMin', 'dMax', 'young', 'poisson', 'friction', 'density', 'steelYoungRatio', 'steelPoisson', 'steelDensity', 'law',
+    'rollingStiffness',
     'prepYoung', 'prepDamping', 'depFriction', 'damping', 'dtSafety', 'timeStep', 'densityStep',
     'crush', 'ft0', 'm', 'pattern', 'rMin', 'criterion', 'weibullModulus', 'keep', 'growTime', 'maxPerCheck', 'fatigue',
     'fatigueExponent', 'fatigueEndurance', 'fatigueHysteresis', 'Tc', 'abrasion', 'strength', 'gamma',
@@ -100,6 +105,7 @@ class BoxParameters(Parameters):
         p, bad = self, self.bad
         if p['dMin'] >= p['dMax']:
             bad('dMin', 'must be smaller than dMax = %g' % p['dMax'])
+        checkRolling(bad, p)
         if p['bedDepth'] < 2 * p['dMax']:
             bad('bedDepth', 'must hold at least two of the largest grains, 2 dMax = %g m' % (2 * p['dMax']))
         if p['bedDepth'] / p['layers'] < p['dMax']:

@@ -81,7 +81,7 @@ class StoredPacking:
         exp.newScene()
         ballast, steel = scene.materials(p, p['young'])
         rig = scene.Rig(scene.Cylinder(p, steel), ballast, steel)
-        O.engines = scene.engines(p['damping'], p['law'])
+        O.engines = scene.engines(p['damping'], p['law'], scene.rolling(p))
         for g in stored:
             x, y, z, r = (float(v) for v in g)
             O.bodies.append(utils.sphere((x, y, z), r, material=ballast, mask=scene.GRAIN_MASK))
@@ -128,7 +128,7 @@ class StoredPacking:
         pos, rad, top = self.cloud(p, p['seed'], p['fill'] * math.pi * Rin ** 2 * p['height'], Rin)
         # while the cloud falls the wall reaches above it, or grains bounce out over the rim
         self.rig.cylinder = scene.Cylinder(p, steel, max(p['height'], top + p['dMax']))
-        O.engines = scene.engines(p['prepDamping'], p['law']) + [
+        O.engines = scene.engines(p['prepDamping'], p['law'], scene.rolling(p)) + [
             runtime.callback(self, 'shake', iterPeriod=10, dead=True, label='oedoShaker')]
         for c, r in zip(pos, rad):
             O.bodies.append(utils.sphere(tuple(c), float(r), material=self.rig.ballast, mask=scene.GRAIN_MASK))

@@ -42,6 +42,12 @@ PARAMS = {
     'law': Param('linear', '-', "contact law: 'linear' (YADE's default FrictPhys + CundallStrack, as the paper's "
                  "FrictMat inputs and eq. 5 suggest) or 'hertz' (Hertz-Mindlin)", choice('linear', 'hertz'),
                  "'linear' or 'hertz'", text),
+    'rollingFriction': Param(0.0, '-', 'rolling resistance of the grains: the rolling moment between two grains is '
+                             'limited to rollingFriction min(R1, R2) Fn (YADE\'s CohFrictMat etaRoll; a stand-in for the '
+                             'interlocking of angular grains); 0: none, the paper\'s spheres; linear law only',
+                             between(0, 1, closedHi=True), 'a number in [0, 1]'),
+    'rollingStiffness': Param(2.0, '-', 'with rollingFriction: the rolling stiffness kr = rollingStiffness ks R1 R2 '
+                              '(YADE\'s alphaKr, its default)', positive, NUMBER_POSITIVE),
     # preparation: deposition and vibration
     'prepYoung': Param(3e8, 'Pa', "ballast Young's modulus while depositing and vibrating (time scaling; steel keeps "
                        "steelYoungRatio); restored to young before loading", positive, NUMBER_POSITIVE),
@@ -147,6 +153,7 @@ PACKING_KEYS = ('seed', 'diameter', 'height', 'dMin', 'dMax', 'segments', 'young
                 'depFriction', 'depTime', 'pressForce', 'seatForce', 'plateThickness', 'vibAcc', 'vibFreq', 'vibTime',
                 'law')
 PACKING_VERSION = 4
+ROLLING_KEYS = ('rollingFriction', 'rollingStiffness')
 
 
 # A run must end and stay in the range where rigid-sphere DEM holds: these bounds are checked before any work.
@@ -171,6 +178,12 @@ def readText(name, value):
         raise ParamError(name, '%s: %s = %r is not allowed: expected %s [%s], written in decimal (hexadecimal, octal, '
                          'binary, complex and 1_000 forms are refused)' % (OWNER, name, value, p.allowed, p.unit))
     return value
+
+
+def checkRolling(bad, p):
+    """Rolling resistance is YADE's moment law on the linear contact: with law 'linear' only."""
+    if p['rollingFriction'] > 0 and p['law'] != 'linear':
+        bad('rollingFriction', "needs law = 'linear' (YADE's moment law on the linear contact), got law = %r" % p['law'])
 
 
 class OedometerParameters(Parameters):
@@ -244,6 +257,7 @@ class OedometerParameters(Parameters):
                                                                                      MAX_OVERLAP_RATIO))
         if p['dMin'] >= p['dMax']:
             bad('dMin', 'must be smaller than dMax = %g' % p['dMax'])
+        checkRolling(bad, p)
         if p['dMax'] >= p['diameter'] / 2:
             bad('dMax', 'must be smaller than diameter/2 = %g' % (p['diameter'] / 2))
         if p['dMax'] >= p['height']:
@@ -276,6 +290,9 @@ def check(values, text=False):
 def packingKey(p):
     """(the values that decide the packing, the file name it is stored under)."""
     d = {k: p[k] for k in PACKING_KEYS}
+    for k in ROLLING_KEYS:   # in the key only when on: the stored packings of the paper's spheres keep their names
+        if p['rollingFriction'] > 0:
+            d[k] = p[k]
     d['version'] = PACKING_VERSION
     h = hashlib.sha1(json.dumps(d, sort_keys=True).encode()).hexdigest()[:10]
     return d, 'packing-seed%d-%s.json' % (p['seed'], h)

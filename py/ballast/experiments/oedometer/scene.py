@@ -12,10 +12,11 @@ import math
 from yade import O, Vector3, geom, utils
 
 from ... import runtime
-from yade.wrapper import (Bo1_Box_Aabb, Bo1_Facet_Aabb, Bo1_Sphere_Aabb, Bo1_Wall_Aabb, ForceResetter, FrictMat,
-                          Ig2_Box_Sphere_ScGeom, Ig2_Facet_Sphere_ScGeom, Ig2_Sphere_Sphere_ScGeom,
-                          Ig2_Wall_Sphere_ScGeom, InsertionSortCollider, InteractionLoop,
-                          Ip2_FrictMat_FrictMat_FrictPhys, Ip2_FrictMat_FrictMat_MindlinPhys,
+from yade.wrapper import (Bo1_Box_Aabb, Bo1_Facet_Aabb, Bo1_Sphere_Aabb, Bo1_Wall_Aabb, CohFrictMat, ForceResetter,
+                          FrictMat, Ig2_Box_Sphere_ScGeom, Ig2_Facet_Sphere_ScGeom, Ig2_Sphere_Sphere_ScGeom,
+                          Ig2_Sphere_Sphere_ScGeom6D, Ig2_Wall_Sphere_ScGeom, InsertionSortCollider, InteractionLoop,
+                          Ip2_CohFrictMat_CohFrictMat_CohFrictPhys, Ip2_FrictMat_FrictMat_FrictPhys,
+                          Ip2_FrictMat_FrictMat_MindlinPhys, Law2_ScGeom6D_CohFrictPhys_CohesionMoment,
                           Law2_ScGeom_FrictPhys_CundallStrack, Law2_ScGeom_MindlinPhys_Mindlin, NewtonIntegrator)
 
 GRAVITY = (0, 0, -9.81)  # [m/s^2]
@@ -74,10 +75,22 @@ class Rig:
         return cls(Cylinder.fromState(s['cylinder']), O.materials[s['ballast']], O.materials[s['steel']])
 
 
+def rolling(p):
+    """Whether the grains resist rolling (rollingFriction > 0; the paper's spheres do not)."""
+    return p.get('rollingFriction', 0.0) > 0
+
+
 def materials(p, young):
-    """(ballast, steel) FrictMat of section 4, appended to O.materials; steel is steelYoungRatio stiffer."""
-    ballast = FrictMat(young=young, poisson=p['poisson'], frictionAngle=p['friction'], density=p['density'],
-                       label='ballast')
+    """(ballast, steel) of section 4, appended to O.materials; steel is steelYoungRatio stiffer. The ballast is a
+    FrictMat, or with rolling resistance (rolling(p)) YADE's CohFrictMat without cohesion: the linear law's
+    stiffnesses and friction between grains, and a rolling moment kr theta_r (kr = rollingStiffness ks R1 R2)
+    limited to rollingFriction min(R1, R2) Fn (YADE's Law2_ScGeom6D_CohFrictPhys_CohesionMoment)."""
+    kw = dict(young=young, poisson=p['poisson'], frictionAngle=p['friction'], density=p['density'], label='ballast')
+    if rolling(p):
+        ballast = CohFrictMat(isCohesive=False, momentRotationLaw=True, alphaKr=p['rollingStiffness'],
+                              etaRoll=p['rollingFriction'], alphaKtw=0.0, etaTwist=0.0, **kw)
+    else:
+        ballast = FrictMat(**kw)
     steel = FrictMat(young=p['steelYoungRatio'] * young, poisson=p['steelPoisson'], frictionAngle=p['steelFriction'],
                      density=p['steelDensity'], label='steel')
     O.materials.append(ballast)
@@ -85,13 +98,20 @@ def materials(p, young):
     return ballast, steel
 
 
-def engines(damping, law):
-    """ForceResetter, collider, interaction loop with the contact law, Newton with gravity."""
+def engines(damping, law, rollingResistance=False):
+    """ForceResetter, collider, interaction loop with the contact law, Newton with gravity. With rolling
+    resistance (linear law only) grain pairs get ScGeom6D and CohFrictPhys with the moment law; contacts
+    with steel keep ScGeom, FrictPhys and CundallStrack."""
     ip2, law2, _ = LAWS[law]
+    sphere, ip2s, law2s = Ig2_Sphere_Sphere_ScGeom(), [ip2()], [law2()]
+    if rollingResistance:
+        sphere = Ig2_Sphere_Sphere_ScGeom6D()
+        ip2s.append(Ip2_CohFrictMat_CohFrictMat_CohFrictPhys())
+        law2s.append(Law2_ScGeom6D_CohFrictPhys_CohesionMoment(useIncrementalForm=True, always_use_moment_law=True))
     return [
         ForceResetter(),
         InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Facet_Aabb(), Bo1_Wall_Aabb(), Bo1_Box_Aabb()],
                               avoidSelfInteractionMask=AVOID),
-        InteractionLoop([Ig2_Sphere_Sphere_ScGeom(), Ig2_Facet_Sphere_ScGeom(), Ig2_Wall_Sphere_ScGeom(),
-                         Ig2_Box_Sphere_ScGeom()], [ip2()], [law2()]),
+        InteractionLoop([sphere, Ig2_Facet_Sphere_ScGeom(), Ig2_Wall_Sphere_ScGeom(), Ig2_Box_Sphere_ScGeom()], ip2s,
+                        law2s),
         NewtonIntegrator(damping=damping, gravity=GRAVITY, label='newton')]
