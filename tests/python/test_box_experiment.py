@@ -87,6 +87,18 @@ def test_gradings_after_the_graded_cycles(run):
     assert (np.diff(g.Bg) >= -1e-12).all() and g.Bg.iloc[-1] > 0   # grains crushed: the grading moved
 
 
+def test_the_bed_is_stored_and_a_second_run_of_the_seed_repeats_the_first(run):
+    test, s = run
+    assert os.path.isfile(s['bedFile']) and os.path.dirname(s['bedFile']) == os.path.join(test.p['results'], 'beds')
+    again = BoxTest(results=test.p['results'], runId='again', **SMALL)
+    s2 = again.run()
+    assert s2['bedFile'] == s['bedFile']   # reused, not built again
+    a = pd.read_csv(os.path.join(test.out, 'cycles.csv')).drop(columns='cpuSeconds')
+    b = pd.read_csv(os.path.join(again.out, 'cycles.csv')).drop(columns='cpuSeconds')
+    pd.testing.assert_frame_equal(a, b)
+    assert s2['nCrushed'] == s['nCrushed']
+
+
 def test_a_saved_state_reopens_and_goes_on(run, tmp_path):
     test, s = run
     again = BoxTest.reopen(os.path.join(test.out, 'state-end.yade.gz'), results=str(tmp_path))

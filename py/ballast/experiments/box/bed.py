@@ -3,15 +3,20 @@ sides; YADE's infinite walls), the bed placed in `layers` layers: each a loose c
 makeCloud, diameters uniform in [dMin, dMax]) falling frictionless onto the layer below, then pressed
 through a plate at layerPressure until it rests; then friction restored and the grains stiffened to
 the true modulus (:mod:`ballast.experiments.preparation`), with the soft modulus prepYoung before."""
+import json
 import math
+import os
+import time
 
 import numpy as np
 from yade import O, Vector3, pack, utils
 
 from ... import runtime
 from ...geometry import meanCubedDiameterVolume, sphereVolume
+from ...study.files import writeAtomic
 from .. import grains, preparation
 from ..oedometer import scene
+from .parameters import bedKey
 
 CLOUD_SOLID = 0.3            # [-] solid fraction of a falling cloud: grains fall freely
 PRESS_STILL = (0.03, 1e-5)   # ([s], [m]): a press ends when its plate moved less than this over that time
@@ -71,9 +76,46 @@ def cloud(p, seed, vSolid, zBottom):
     return np.column_stack([x[:n], y[:n], z[:n]]), r[:n], float(np.max(z[:n] + r[:n]))
 
 
+def folder(p):
+    return p['bedDir'] or os.path.join(p['results'], 'beds')
+
+
+def prepare(exp):
+    """The bed of the run's seed and bed parameters: loaded from the store (bedDir) if it is there and
+    reuseBed, else built and stored; either way the run starts from the stored grains, so a seed gives
+    the same run. Returns (Rig, bed height [m], porosity [-], grains that escaped, the stored file)."""
+    p = exp.p
+    keys, name = bedKey(p)
+    path = os.path.join(folder(p), name)
+    if not (p['reuseBed'] and os.path.exists(path)):
+        rig, top, porosity, escaped = build(exp)
+        x, r = grains.arrays()[:2]
+        os.makedirs(folder(p), exist_ok=True)
+        doc = {'key': keys, 'created': time.strftime('%Y-%m-%dT%H:%M:%S'), 'runId': exp.runId, 'top': top,
+               'porosity': porosity, 'escaped': escaped, 'steps': dict(exp.phases.steps),
+               'grains': [[repr(float(v)) for v in (xi[0], xi[1], xi[2], ri)] for xi, ri in zip(x, r)]}
+        writeAtomic(path, json.dumps(doc))   # concurrent runs of one seed never see half a file
+        exp.phases.say('bed: %d grains saved to %s' % (len(r), path))
+    else:
+        exp.phases.say('bed: reusing %s' % path)
+    with open(path) as fh:
+        doc = json.load(fh)
+    exp.newScene()
+    ballast, steel = scene.materials(p, p['young'])
+    rig = Rig(walls(p, steel), ballast, steel)
+    O.engines = scene.engines(p['damping'], p['law'], scene.rolling(p))
+    for g in doc['grains']:
+        x, y, z, r = (float(v) for v in g)
+        O.bodies.append(utils.sphere((x, y, z), r, material=ballast, mask=scene.GRAIN_MASK))
+    O.dt = p['dtSafety'] * utils.PWaveTimeStep()
+    # contacts re-form with the stored overlaps; only the shear and rolling history is lost: let it settle
+    exp.phases.run('settle', lambda: grains.unbalanced() < 0.01, tEnd=O.time + 0.01, checkEvery=100)
+    return rig, doc['top'], doc['porosity'], doc['escaped'], path
+
+
 def build(exp):
     """The box, the bed in layers, friction and stiffness restored; returns (Rig, the bed's height [m] under
-    the last press, its porosity [-])."""
+    the last press, its porosity [-], the grains that left the box)."""
     p = exp.p
     exp.newScene()
     ballast, steel = scene.materials(p, p['prepYoung'])

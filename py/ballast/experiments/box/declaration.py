@@ -1,6 +1,6 @@
 """The box test as a study sees it (no YADE)."""
 from ..declaration import Declaration
-from .parameters import OWNER, PARAMS, check
+from .parameters import OWNER, PARAMS, bedKey, check
 
 DECLARATION = Declaration(
     name='box', owner=OWNER, params=PARAMS,
@@ -8,8 +8,10 @@ DECLARATION = Declaration(
     bounds=['`dMin` < `dMax`; the bed at least 2 `dMax` deep, each layer at least `dMax`; the box at least 3 `dMax` '
             'wide; at least 2 `dMax` of ballast beside the sleeper; `seatLoad` < `peakLoad`.',
             'A cycle spans at least 100 time steps; a run at most 1e9; `Tc` and `abrasionPeriod` within a cycle.',
-            '`loadFile`: read and checked with the parameters (the row of a fault named).'],
-    check=check, script='scripts/box_test.py', sets={'results': 'results', 'runId': 'runId', 'sampleStore': None},
+            '`loadFile`: read and checked with the parameters (the row of a fault named).',
+            '`results` and the bed store (`bedDir`, default `<results>/beds`) are created and written to before the '
+            'preparation.'],
+    check=check, script='scripts/box_test.py', sets={'results': 'results', 'runId': 'runId', 'sampleStore': 'bedDir'}, sampleKey=lambda p: bedKey(p)[1],
     cost=lambda p: p['cycles'] * p.history().period / p.loadingTimeStep(),
     results=[('settlement', 'm'), ('resilient', 'm'), ('nCrushed', '-'), ('nAbraded', '-'), ('cpuSeconds', 's')],
     statistics=['settlement', 'nCrushed'], response=('settlement',))

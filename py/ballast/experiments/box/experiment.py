@@ -23,7 +23,7 @@ from yade.wrapper import FrictMat, InterpolatingDirectedForceEngine
 
 from ... import runtime
 from ...engines import BallastAbrasionEngine, BallastCrushEngine
-from ...params import validate
+from ...params import requireWritableDir, validate
 from .. import chain, grains, timestep
 from ..base import Experiment
 from ..oedometer import scene
@@ -123,7 +123,7 @@ class BoxTest(Experiment):
 
     def __init__(self, parameters=None, **params):
         self.rig = self.recorder = None
-        self.bedTop = self.porosity = None
+        self.bedTop = self.porosity = self.bedFile = None
         self.nEscaped, self.initial, self.gradings, self.frames = 0, None, [], []
         Experiment.__init__(self, parameters, **params)
 
@@ -134,10 +134,15 @@ class BoxTest(Experiment):
     def prepare(self):
         """The box, the bed in layers and the sleeper seated on it under the seating load."""
         self.openRunDirectory()
-        self.rig, self.bedTop, self.porosity, self.nEscaped = bed.build(self)
+        self.rig, self.bedTop, self.porosity, self.nEscaped, self.bedFile = bed.prepare(self)
         self.adopt()
         self.seat()
         return self
+
+    def checkOutputs(self):
+        """Before any work: the results folder and the bed store can be created and written to."""
+        Experiment.checkOutputs(self)
+        requireWritableDir(OWNER, 'bedDir', bed.folder(self.p))
 
     def seat(self):
         """The sleeper on the highest grain under its footprint, the engines, the time step, the seating load."""
@@ -260,7 +265,8 @@ class BoxTest(Experiment):
     # ------------------------------------------------------------------ saving
     def state(self):
         return dict(self.baseState(), rig=runtime.ref(self.rig), recorder=runtime.ref(self.recorder),
-                    bedTop=self.bedTop, porosity=self.porosity, nEscaped=self.nEscaped, initial=self.initial,
+                    bedTop=self.bedTop, porosity=self.porosity, nEscaped=self.nEscaped, bedFile=self.bedFile,
+                    initial=self.initial,
                     gradings=self.gradings, frames=self.frames)
 
     @classmethod
@@ -268,6 +274,6 @@ class BoxTest(Experiment):
         exp = cls.__new__(cls)
         exp.setBaseState(s, ref)
         exp.rig, exp.recorder = ref(s['rig']), ref(s['recorder'])
-        for k in ('bedTop', 'porosity', 'nEscaped', 'initial', 'gradings', 'frames'):
+        for k in ('bedTop', 'porosity', 'nEscaped', 'bedFile', 'initial', 'gradings', 'frames'):
             setattr(exp, k, s[k])
         return exp

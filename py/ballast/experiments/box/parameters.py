@@ -3,6 +3,8 @@ line (``--name value``) and study tables use these names, units, ranges and defa
 contact law and every crushing, abrasion, strength, fatigue and time-step option are the oedometer's
 declarations (the same ballast, the same engines); the box's own are its geometry, the bed's
 preparation, the sleeper and the load. Needs no YADE."""
+import hashlib
+import json
 import math
 import os
 
@@ -30,6 +32,9 @@ PARAMS = dict({
                            '(boxLength boxWidth bedDepth / layers)', between(0.3, 0.74), 'a number in [0.3, 0.74)'),
     'layerPressure': Param(1e5, 'Pa', 'pressure on each frictionless layer through a plate until it rests (the '
                            'oedometer\'s press: 8 kN on its 0.3 m cylinder, 113 kPa)', positive, NUMBER_POSITIVE),
+    'reuseBed': Param(True, '-', 'load the stored bed of this seed and bed parameters if there is one (the study '
+                      'builds each bed once)', boolean, '0 or 1', flag),
+    'bedDir': Param('', 'path', 'where beds are stored (default <results>/beds)', anyText, 'a path', text),
     'steelFriction': OEDOMETER['steelFriction'].withDefault(0.0, 'friction angle of the steel walls and floor of the box'),
     # the sleeper
     'sleeperWidth': Param(0.25, 'm', 'width of the sleeper section along the track (x)', positive, NUMBER_POSITIVE),
@@ -66,6 +71,21 @@ PARAMS = dict({
     'crush', 'ft0', 'm', 'pattern', 'rMin', 'criterion', 'weibullModulus', 'keep', 'growTime', 'maxPerCheck', 'fatigue',
     'fatigueExponent', 'fatigueEndurance', 'fatigueHysteresis', 'Tc', 'abrasion', 'strength', 'gamma',
     'abrasionPeriod', 'lostAsFines', 'results', 'runId', 'progress')})
+
+
+# What decides a bed: these parameters and the version of its preparation (bump it whenever bed.build changes:
+# stored beds of older versions are then not reused).
+BED_KEYS = ('seed', 'boxLength', 'boxWidth', 'bedDepth', 'layers', 'solidFraction', 'layerPressure', 'steelFriction',
+            'dMin', 'dMax', 'young', 'poisson', 'friction', 'density', 'steelYoungRatio', 'steelPoisson', 'steelDensity',
+            'prepYoung', 'prepDamping', 'depFriction', 'law', 'rollingFriction', 'rollingStiffness')
+BED_VERSION = 1
+
+
+def bedKey(p):
+    """(the values that decide the bed, the file name it is stored under)."""
+    d = dict({k: p[k] for k in BED_KEYS}, version=BED_VERSION)
+    h = hashlib.sha1(json.dumps(d, sort_keys=True).encode()).hexdigest()[:10]
+    return d, 'bed-seed%d-%s.json' % (p['seed'], h)
 
 
 class BoxParameters(Parameters):
