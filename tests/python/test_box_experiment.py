@@ -25,7 +25,7 @@ G = 9.81
 
 @pytest.fixture(scope='module')
 def run(tmp_path_factory):
-    test = BoxTest(results=str(tmp_path_factory.mktemp('box')), runId='small', **SMALL)
+    test = BoxTest(results=str(tmp_path_factory.mktemp('box')), runId='small', vtk=True, **SMALL)
     summary = test.run()
     return test, summary
 
@@ -59,6 +59,18 @@ def test_a_short_run_writes_every_output(run):
     assert (cyc.resilient >= 0).all() and (cyc.settlementPeak >= cyc.settlement - 1e-12).all()
     with open(os.path.join(test.out, 'summary.json')) as fh:
         assert json.load(fh)['nCrushed'] == s['nCrushed']
+
+
+def test_vtk_frames_at_the_graded_cycles_for_paraview(run):
+    test, s = run
+    with open(os.path.join(test.out, 'boxes.pvd')) as fh:
+        pvd = fh.read()
+    for k in (0, 1, 2, 3):
+        for part in ('grains', 'contacts', 'sleeper'):
+            name = 'vtk/%s-%06d.vtu' % (part, k)
+            assert name in pvd and os.path.isfile(os.path.join(test.out, name)), name
+    with open(os.path.join(test.out, 'vtk', 'grains-000003.vtu')) as fh:
+        assert 'NumberOfPoints="%d"' % s['nGrains'] in fh.read()
 
 
 def test_the_mass_ledger_is_exact(run):

@@ -20,7 +20,8 @@ AVALANCHE = 0.005   # [m] delta at the applied peak above which a realization av
 PAPER = {'timeStep': 'pwave', 'stopAt': 0.0, 'densityStep': 0.0}   # the fast options' values in the paper's settings
 OPTIONS = {'stiffness': dict(PAPER, timeStep='stiffness'), 'peak': dict(PAPER, stopAt=0.5),
            'combined': dict(PAPER, timeStep='stiffness', stopAt=0.5), 'density': dict(PAPER, densityStep=2e-6),
-           'densitypeak': dict(PAPER, densityStep=2e-6, stopAt=0.5)}   # name -> the option's parameters (the table's)
+           'densitypeak': dict(PAPER, densityStep=2e-6, stopAt=0.5),
+           'density12peak': dict(PAPER, densityStep=1.2e-6, stopAt=0.5)}   # name -> the option's parameters (the table's)
 
 
 def frame(path, **values):
