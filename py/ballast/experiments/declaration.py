@@ -24,10 +24,12 @@ class Declaration:
                 (run: a ballast.study.data.Run), merged into its summary when a study is read
     response    (name, ...): the result the analyses test, in order of preference: the first one every
                 run of a study has (runs of older versions may lack the later results)
+    brief       brief(summary) -> the few words of a finished run's line in a study's progress (default: the
+                first three results with their units)
     """
 
     def __init__(self, name, params, check, script, sets, sampleKey=None, cost=None, recordTimes=None, results=(),
-                 statistics=(), derived=None, response=(), owner=None, title=None, bounds=()):
+                 statistics=(), derived=None, response=(), owner=None, title=None, bounds=(), brief=None):
         self.name, self.params, self.check, self.script, self.sets = name, params, check, script, sets
         self.owner = owner or name
         self.title, self.bounds = title or name, list(bounds)
@@ -36,6 +38,11 @@ class Declaration:
         self.recordTimes = recordTimes or (lambda p: ())
         self.results, self.statistics, self.response = list(results), list(statistics), tuple(response)
         self.derived = derived or (lambda run: {})
+        self.brief = brief or self._brief
+
+    def _brief(self, summary):
+        return ', '.join('%s %s%s' % (name, _number(summary.get(name)), '' if unit == '-' else ' ' + unit)
+                         for name, unit in self.results[:3])
 
     def studySets(self):
         """The parameter names a study sets itself (a table may not have them as columns)."""
@@ -43,3 +50,7 @@ class Declaration:
 
     def __repr__(self):
         return '<Declaration %s: %d parameters, script %s>' % (self.name, len(self.params), self.script)
+
+
+def _number(v):
+    return '%.4g' % v if isinstance(v, (int, float)) else '?'

@@ -341,9 +341,8 @@ class Progress:
             tally = '[%d/%d, %d failed%s]' % (done, self.nTodo, self.counts['failed'], eta)
             if ok:
                 s = res['summary'] or {}
-                st.say('ok     %s (line %d) %s on %s: peak F %.0f kN at delta %.2f mm, %s crushed  %s' % (
-                    res['runId'], n, fmtTime(res.get('wall')), res.get('host'), s.get('peakForce', float('nan')) / 1e3,
-                    s.get('deltaAtPeak', float('nan')) * 1e3, s.get('nCrushed', '?'), tally))
+                st.say('ok     %s (line %d) %s on %s: %s  %s' % (res['runId'], n, fmtTime(res.get('wall')), res.get('host'),
+                                                               st.declaration.brief(s), tally))
             else:
                 st.say('%-6s %s (line %d) %s: %s; log %s  %s' % (
                     res['status'].upper(), res['runId'], n, fmtTime(res.get('wall')), res.get('error'),

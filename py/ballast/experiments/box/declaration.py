@@ -14,4 +14,7 @@ DECLARATION = Declaration(
     check=check, script='scripts/box_test.py', sets={'results': 'results', 'runId': 'runId', 'sampleStore': 'bedDir'}, sampleKey=lambda p: bedKey(p)[1],
     cost=lambda p: p['cycles'] * p.history().period / p.loadingTimeStep(),
     results=[('settlement', 'm'), ('resilient', 'm'), ('nCrushed', '-'), ('nAbraded', '-'), ('cpuSeconds', 's')],
-    statistics=['settlement', 'nCrushed'], response=('settlement',))
+    statistics=['settlement', 'nCrushed'], response=('settlement',),
+    brief=lambda s: '%s cycles, settlement %.3f mm (resilient %.3f mm), %s crushed' % (
+        s.get('cycles', '?'), 1e3 * s.get('settlement', float('nan')), 1e3 * s.get('resilient', float('nan')),
+        s.get('nCrushed', '?')))
