@@ -18,7 +18,7 @@ import os
 import time
 
 import numpy as np
-from yade import O, Vector3, utils
+from yade import O, Vector3, plot, utils
 from yade.wrapper import FrictMat, InterpolatingDirectedForceEngine
 
 from ... import runtime
@@ -30,7 +30,7 @@ from ..oedometer import scene
 from . import bed, outputs
 from .parameters import OWNER, PARAMS, BoxParameters
 
-LOAD, RECORDER = 'boxLoad', 'boxRecorder'
+LOAD, RECORDER, SAVER = 'boxLoad', 'boxRecorder', 'boxSaver'
 SEAT_STILL = (0.01, 2e-6)     # ([s], [m]): seated when the sleeper moved less than this over that time
 SEAT_TIME = (0.02, 0.2)       # [s] shortest and longest seating (a bed of spheres creeps under a sleeper: docs/box.md)
 SLEEPER_STIFFNESS_MARGIN = 2.0  # [-] densityStep: the sleeper's contacts may stiffen this much as grains crush
@@ -119,7 +119,7 @@ class BoxTest(Experiment):
 
     NAME = 'box'
     Parameters = BoxParameters
-    REOPEN_PARAMS = ('results', 'runId', 'progress', 'vtk', 'cycles')
+    REOPEN_PARAMS = ('results', 'runId', 'progress', 'vtk', 'cycles', 'saveEvery')
 
     def __init__(self, parameters=None, **params):
         self.rig = self.recorder = None
@@ -193,6 +193,10 @@ class BoxTest(Experiment):
         load.times, load.magnitudes = [rec.t0 + t for t in times], forces
         O.engines = O.engines + [runtime.callback(self, 'sample', virtPeriod=history.period / p['samples'],
                                                   virtLast=rec.t0, initRun=True, label=RECORDER)]
+        if p['saveEvery'] > 0:   # first in the chain: a state saved before the step begins resumes exactly
+            O.engines = [runtime.callback(self, 'checkpoint', iterPeriod=1, dead=True, label=SAVER)] + list(O.engines)
+        plot.reset()
+        plot.plots = {'settlement': ('F',)}   # YADE's live plot: the load against the settlement
         if p['densityStep'] > 0:
             s = O.bodies[rec.sleeper]
             K = sum(i.phys.kn for i in s.intrs() if i.isReal)
@@ -213,8 +217,20 @@ class BoxTest(Experiment):
         """The recorder's sample (a callback at simulated times); after the cycles of the 1-2-5 series (1, 2, 5,
         10, 20, ...) the grading and a VTK frame."""
         k = self.recorder.sample()
-        if k and outputs.gradedCycle(k):
-            self.grade(k)
+        t, _, F, Fgrains, settlement = self.recorder.samples[-1][:5]
+        plot.addData(t=t, F=F, Fgrains=Fgrains, settlement=settlement)
+        if k:
+            outputs.writeCycles(self)   # a killed run keeps its cycles (written atomically)
+            if outputs.gradedCycle(k):
+                self.grade(k)
+            if self.p['saveEvery'] and k % self.p['saveEvery'] == 0:
+                chain.engine(SAVER).dead = False   # wakes at the start of the next step
+
+    def checkpoint(self):
+        """The saver's call (saveEvery), at the start of the step after a cycle closed: a state to reopen a long
+        run from, exactly where it was."""
+        chain.engine(SAVER).dead = True
+        self.save(os.path.join(self.out, 'state-cycle%07d.yade.gz' % self.cyclesDone()))
 
     def grade(self, k):
         """The grading (and with vtk a frame) after cycle k, once."""

@@ -99,6 +99,12 @@ def summary(exp):
         'stepsPerCycle': rec.period / O.dt}
 
 
+def writeCycles(exp):
+    rec = exp.recorder
+    writeAtomic(os.path.join(exp.out, 'cycles.csv'),
+                pd.DataFrame(rec.cycles, columns=rec.CYCLE_COLUMNS).to_csv(index=False, float_format='%.9g'))
+
+
 def write(exp):
     """Every output file; returns the summary."""
     rec, out = exp.recorder, exp.out

@@ -62,6 +62,9 @@ PARAMS = dict({
     'rollingFriction': OEDOMETER['rollingFriction'].withDefault(0.3, OEDOMETER['rollingFriction'].doc.replace(
         "0: none, the paper's spheres", "0: none, the paper's spheres (which let the sleeper punch in); 0.3 by default "
         "here")),
+    'saveEvery': Param(0, 'cycles', 'besides the states at the start and the end, save the state every saveEvery cycles '
+                       '(state-cycle<N>.yade.gz: BoxTest.reopen goes on from it; 0 = only those two)', intBetween(0, 10 ** 9),
+                       'an integer >= 0'),
     'vtk': Param(False, '-', 'VTK frames (grains, contacts, the sleeper and the box) at the cycles the grading is read '
                  '(boxes.pvd)', boolean, '0 or 1', flag),
 }, **{k: OEDOMETER[k] for k in (
