@@ -13,6 +13,7 @@ import pytest
 pytest.importorskip('yade')
 from ballast.experiments.box import BoxTest  # noqa: E402
 from ballast.experiments.box.zones import ZONES  # noqa: E402
+from ballast.params import ParamError  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 SMALL = dict(boxLength=0.3, boxWidth=0.12, bedDepth=0.1, layers=2, sleeperWidth=0.1, sleeperHeight=0.05, sleeperMass=5,
@@ -141,6 +142,19 @@ def test_a_long_run_killed_goes_on_from_its_last_state(run, tmp_path):
     pd.testing.assert_frame_equal(a.iloc[:2], b.iloc[:2])   # saved with the state
     assert b.settlement.iloc[2] == pytest.approx(a.settlement.iloc[2], rel=TOL_RESUME)
     assert b.resilient.iloc[2] == pytest.approx(a.resilient.iloc[2], rel=10 * TOL_RESUME)
+
+
+def test_a_run_in_slices_goes_on_from_a_state_and_refuses_other_physics(run, tmp_path):
+    test, s = run
+    end = os.path.join(test.out, 'state-end.yade.gz')
+    with pytest.raises(ParamError, match=r"ft0 = 40000.0 is not allowed with continueFrom: the saved run has ft0 = 35000.0"):
+        BoxTest(results=str(tmp_path), continueFrom=end, **dict(SMALL, ft0=4e4, cycles=1)).run()
+    with pytest.raises(ParamError, match='continueFrom = .* is not allowed: no such state file'):
+        BoxTest(results=str(tmp_path), continueFrom=str(tmp_path / 'none.yade.gz'), **SMALL)
+    slice2 = BoxTest(results=str(tmp_path), runId='slice2', continueFrom=end, **dict(SMALL, cycles=1))
+    s2 = slice2.run()
+    cyc = pd.read_csv(os.path.join(str(tmp_path), 'slice2', 'cycles.csv'))
+    assert list(cyc.cycle) == [1, 2, 3, 4] and s2['cycles'] == 4 and s2['params']['continueFrom'] == end
 
 
 def test_the_command_line_refuses_a_bad_value(tmp_path):

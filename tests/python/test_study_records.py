@@ -145,6 +145,23 @@ def test_the_experiment_says_which_checks_a_record_keeps_and_a_record_may_cut_it
         assert [r['iter'] for r in csv.DictReader(fh)] == ['0', '125', '300', '700', '999']
 
 
+def test_an_experiment_that_names_its_record_files_gets_them_whole(tmp_path):
+    """The box test's declaration names the files of its record: copied whole, and nothing else (its
+    crushes.csv is its own, not the oedometer's events thinned)."""
+    run = tmp_path / 'box'
+    run.mkdir()
+    files = {'summary.json': json.dumps({'settlement': 1e-4, 'params': {'seed': 1}}), 'row.json': '{}',
+             'cycles.csv': 'cycle,settlement\n1,1e-4\n', 'grading.csv': 'cycle,Bg\n0,0\n', 'zones.csv': 'under\n0\n',
+             'crushes.csv': 't,cycle,x,zone\n0.1,1,0.0,under\n', 'samples.csv': 't,F\n0,3000\n', 'fd.csv': 'x\n'}
+    for name, text in files.items():
+        (run / name).write_text(text)
+    dest = writeRecord(str(run), str(tmp_path / 'rec'), 'box')
+    kept = set(os.listdir(dest))
+    assert kept == set(declaration('box').recordFiles) | {'record.json'}
+    for name in declaration('box').recordFiles:
+        assert (tmp_path / 'rec' / name).read_text() == files[name], name
+
+
 @pytest.fixture
 def setup(tmp_path):
     (tmp_path / 'tiny.table').write_text(TABLE)

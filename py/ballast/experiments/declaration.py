@@ -26,10 +26,13 @@ class Declaration:
                 run of a study has (runs of older versions may lack the later results)
     brief       brief(summary) -> the few words of a finished run's line in a study's progress (default: the
                 first three results with their units)
+    recordFiles the files of a run its compact record keeps whole (ballast.study.records); None: the
+                oedometer's (summary, row, psd and cycles whole, fd, checks and crushes thinned)
     """
 
     def __init__(self, name, params, check, script, sets, sampleKey=None, cost=None, recordTimes=None, results=(),
-                 statistics=(), derived=None, response=(), owner=None, title=None, bounds=(), brief=None):
+                 statistics=(), derived=None, response=(), owner=None, title=None, bounds=(), brief=None,
+                 recordFiles=None):
         self.name, self.params, self.check, self.script, self.sets = name, params, check, script, sets
         self.owner = owner or name
         self.title, self.bounds = title or name, list(bounds)
@@ -39,6 +42,7 @@ class Declaration:
         self.results, self.statistics, self.response = list(results), list(statistics), tuple(response)
         self.derived = derived or (lambda run: {})
         self.brief = brief or self._brief
+        self.recordFiles = None if recordFiles is None else tuple(recordFiles)
 
     def _brief(self, summary):
         return ', '.join('%s %s%s' % (name, _number(summary.get(name)), '' if unit == '-' else ' ' + unit)

@@ -8,6 +8,7 @@ full one:
     study.json              the rows of the table (run ids, cells), as in the study directory
     runs/<run id>/          per finished run, a few tens of kB:
         summary.json        the run's summary.json as written
+    (an experiment whose declaration names its recordFiles keeps those whole instead of what follows)
         row.json            the runner's row.json (table row, code sha1, host, command, duration)
         fd.csv              fd.csv thinned to at most MAX_FD_ROWS rows (:func:`thinCurve`), same columns
         checks.csv          the per-check log thinned (:func:`thinChecks`): every check where a grain
@@ -135,20 +136,32 @@ def writeRecord(runDir, dest, declaration=None, summaryKeys=None):
     tmp = '%s.%s.tmp' % (dest, uuid.uuid4().hex[:6])
     os.makedirs(tmp)
     info = {'runId': os.path.basename(os.path.normpath(dest))}
-    for name in COPIED:
+    decl = experimentDeclaration(declaration)
+    for name in COPIED if decl.recordFiles is None else decl.recordFiles:
         if os.path.isfile(os.path.join(runDir, name)):
             shutil.copyfile(os.path.join(runDir, name), os.path.join(tmp, name))
     if summaryKeys is not None:
         keep = {k: run.summary[k] for k in summaryKeys if k in run.summary}
         keep['params'] = run.summary['params']
         writeAtomic(os.path.join(tmp, 'summary.json'), json.dumps(keep, indent=1))
+    if decl.recordFiles is None:   # the oedometer's: its long files thinned
+        thinned(run, runDir, tmp, info, decl)
+    writeAtomic(os.path.join(tmp, 'record.json'), json.dumps(info, indent=1))
+    if os.path.isdir(dest):
+        shutil.rmtree(dest)
+    moveSynced(tmp, dest)
+    return dest
+
+
+def thinned(run, runDir, tmp, info, decl):
+    """fd.csv, checks.csv (around decl's recordTimes) and crushes.csv of the run, thinned into tmp."""
     if run.fd is not None:
         kept = thinFd(columns(run.fd))
         writeAtomic(os.path.join(tmp, 'fd.csv'), keptLines(os.path.join(runDir, 'fd.csv'), kept))
         info['fdRows'] = {'run': len(run.fd), 'record': int(len(kept))}
     if run.checks is not None:
         cols, n = columns(run.checks), len(run.checks)
-        times = experimentDeclaration(declaration).recordTimes(run.params) if run.params else ()
+        times = decl.recordTimes(run.params) if run.params else ()
         kept = thinChecks(cols, times=times) if n else []
         writeAtomic(os.path.join(tmp, 'checks.csv'), keptLines(os.path.join(runDir, 'checks.csv'), kept))
         info['checks'] = {'run': n, 'record': int(len(kept)), 'crushing': int(np.sum(cols['nCrushed'] > 0)) if n else 0,
@@ -156,11 +169,6 @@ def writeRecord(runDir, dest, declaration=None, summaryKeys=None):
     if run.crushes is not None:
         rows = zip(*(column(run.crushes, c) for c in ('t', 'radius', 'ratio')))
         writeAtomic(os.path.join(tmp, 'crushes.csv'), 't,radius,ratio\n' + ''.join('%.10g,%.10g,%.10g\n' % r for r in rows))
-    writeAtomic(os.path.join(tmp, 'record.json'), json.dumps(info, indent=1))
-    if os.path.isdir(dest):
-        shutil.rmtree(dest)
-    moveSynced(tmp, dest)
-    return dest
 
 
 def keepRecord(runDir, records, runId, declaration=None):

@@ -15,6 +15,9 @@ DECLARATION = Declaration(
     cost=lambda p: p['cycles'] * p.history().period / p.loadingTimeStep(),
     results=[('settlement', 'm'), ('resilient', 'm'), ('nCrushed', '-'), ('nAbraded', '-'), ('cpuSeconds', 's')],
     statistics=['settlement', 'nCrushed'], response=('settlement',),
+    # whole: a run's per-cycle table, gradings, crushes and zones are tens of kB for 1 000 cycles; samples.csv
+    # (100 rows a cycle) and the states stay out
+    recordFiles=('summary.json', 'row.json', 'cycles.csv', 'grading.csv', 'crushes.csv', 'zones.csv'),
     brief=lambda s: '%s cycles, settlement %.3f mm (resilient %.3f mm), %s crushed' % (
         s.get('cycles', '?'), 1e3 * s.get('settlement', float('nan')), 1e3 * s.get('resilient', float('nan')),
         s.get('nCrushed', '?')))

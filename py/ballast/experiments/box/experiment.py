@@ -23,7 +23,7 @@ from yade.wrapper import FrictMat, InterpolatingDirectedForceEngine
 
 from ... import runtime
 from ...engines import BallastAbrasionEngine, BallastCrushEngine
-from ...params import requireWritableDir, validate
+from ...params import ParamError, requireWritableDir, validate
 from .. import chain, grains, timestep
 from ..base import Experiment
 from ..oedometer import scene
@@ -119,7 +119,7 @@ class BoxTest(Experiment):
 
     NAME = 'box'
     Parameters = BoxParameters
-    REOPEN_PARAMS = ('results', 'runId', 'progress', 'vtk', 'cycles', 'saveEvery')
+    REOPEN_PARAMS = ('results', 'runId', 'progress', 'vtk', 'cycles', 'saveEvery', 'continueFrom')
 
     def __init__(self, parameters=None, **params):
         self.rig = self.recorder = None
@@ -274,6 +274,24 @@ class BoxTest(Experiment):
         self.say('done: %d cycles, settlement %.2f mm (resilient %.3f mm), %d crushed, %d abraded; results in %s' % (
             k, 1e3 * s['settlement'], 1e3 * s['resilient'], s['nCrushed'], s['nAbraded'], self.out))
         return s
+
+    def run(self):
+        """prepare() and load(); with continueFrom, the saved run reopened into this run's folder and `cycles`
+        more cycles of it (goOn). Returns the summary."""
+        if self.p['continueFrom']:
+            return self.goOn()
+        return Experiment.run(self)
+
+    def goOn(self):
+        """The run saved in continueFrom, reopened with this run's folder and reporting, `cycles` more cycles.
+        ParamError naming the first physics parameter that differs from the saved run's, before any step."""
+        p = self.p
+        saved = BoxTest.reopen(p['continueFrom'], **{k: p[k] for k in self.REOPEN_PARAMS})
+        for k in PARAMS:
+            if k not in self.REOPEN_PARAMS and saved.p[k] != p[k]:
+                raise ParamError(k, '%s: %s = %r is not allowed with continueFrom: the saved run has %s = %r' % (
+                    OWNER, k, p[k], k, saved.p[k]))
+        return saved.load(p['cycles'])
 
     def summary(self):
         return outputs.summary(self)

@@ -62,6 +62,9 @@ PARAMS = dict({
     'rollingFriction': OEDOMETER['rollingFriction'].withDefault(0.3, OEDOMETER['rollingFriction'].doc.replace(
         "0: none, the paper's spheres", "0: none, the paper's spheres (which let the sleeper punch in); 0.3 by default "
         "here")),
+    'continueFrom': Param('', 'path', 'a state a box test saved (state-end or state-cycle<N>.yade.gz): go on from it '
+                          'for `cycles` more cycles, into this run\'s folder (a long run in slices; the physics must be '
+                          'the saved run\'s: a difference is refused, naming the parameter)', anyText, 'a path', text),
     'saveEvery': Param(0, 'cycles', 'besides the states at the start and the end, save the state every saveEvery cycles '
                        '(state-cycle<N>.yade.gz: BoxTest.reopen goes on from it; 0 = only those two)', intBetween(0, 10 ** 9),
                        'an integer >= 0'),
@@ -143,6 +146,8 @@ class BoxParameters(Parameters):
             bad('sleeperGap', 'leaves no sleeper in a box of width %g m' % p['boxWidth'])
         if not p['loadFile'] and p['seatLoad'] >= p['peakLoad']:
             bad('seatLoad', 'must be smaller than peakLoad = %g N' % p['peakLoad'])
+        if p['continueFrom'] and not os.path.isfile(p['continueFrom']):
+            bad('continueFrom', 'no such state file')
         if p['loadFile']:
             if not os.path.isfile(p['loadFile']):
                 bad('loadFile', 'no such file')
