@@ -13,7 +13,8 @@ DECLARATION = Declaration(
             'preparation.'],
     check=check, script='scripts/box_test.py', sets={'results': 'results', 'runId': 'runId', 'sampleStore': 'bedDir'}, sampleKey=lambda p: bedKey(p)[1],
     cost=lambda p: p['cycles'] * p.history().period / p.loadingTimeStep(),
-    results=[('settlement', 'm'), ('resilient', 'm'), ('nCrushed', '-'), ('nAbraded', '-'), ('cpuSeconds', 's')],
+    results=[('settlement', 'm'), ('resilient', 'm'), ('nCrushed', '-'), ('nAbraded', '-'), ('maxStressRatio', '-'),
+             ('maxDamage', '-'), ('cpuSecondsPerCycle', 's'), ('cpuSeconds', 's')],
     statistics=['settlement', 'nCrushed'], response=('settlement',),
     # whole: a run's per-cycle table, gradings, crushes and zones are tens of kB for 1 000 cycles; samples.csv
     # (100 rows a cycle) and the states stay out

@@ -42,9 +42,9 @@ class Recorder:
     a row of cycles.csv at each cycle's end: the permanent settlement (at the seating load), the resilient
     deflection, the work of the load over the cycle, crushes and abrasions, the largest fatigue damage."""
 
-    COLUMNS = ('t', 'cycle', 'F', 'Fgrains', 'settlement', 'tilt', 'nCrushed', 'nAbraded')
+    COLUMNS = ('t', 'cycle', 'F', 'Fgrains', 'settlement', 'tilt', 'nCrushed', 'nAbraded', 'maxStressRatio')
     CYCLE_COLUMNS = ('cycle', 't', 'settlement', 'settlementPeak', 'resilient', 'work', 'crushes', 'abrasions',
-                     'nCrushed', 'nAbraded', 'maxDamage', 'nGrains', 'tilt', 'cpuSeconds')
+                     'nCrushed', 'nAbraded', 'maxDamage', 'maxStressRatio', 'nGrains', 'tilt', 'cpuSeconds')
 
     def __init__(self, sleeper=None, z0=None, t0=None, period=None, mass=None):
         self.sleeper, self.z0, self.t0, self.period, self.mass = sleeper, z0, t0, period, mass
@@ -88,8 +88,10 @@ class Recorder:
         """A row of samples.csv; returns the cycle it closed, or 0."""
         counts = [sum(getattr(e, k) for e in O.engines if isinstance(e, kind)) for kind, k in
                   ((BallastCrushEngine, 'nCrushed'), (BallastAbrasionEngine, 'nAbraded'))]
+        crush = [e for e in O.engines if isinstance(e, BallastCrushEngine)]
+        ratio = max([e.maxCrushableRatio for e in crush], default=math.nan)   # at the engine's last check
         row = [O.time - self.t0, self.cycle(), self.applied(), self.grainsForce(), self.z0 - self.underside(),
-               self.tilt()] + counts
+               self.tilt()] + counts + [ratio]
         self.samples.append(row)
         if self.start is None:
             self.start, self.cpu = len(self.samples) - 1, time.process_time()
@@ -107,7 +109,8 @@ class Recorder:
         self.cycles.append([n, rows[-1, 0], s[-1], float(np.max(s)), float(np.max(s) - s[-1]),
                             float(np.sum(0.5 * (F[1:] + F[:-1]) * np.diff(s))),
                             int(rows[-1, 6] - rows[0, 6]), int(rows[-1, 7] - rows[0, 7]), int(rows[-1, 6]),
-                            int(rows[-1, 7]), max([e.maxDamage for e in crush], default=0.0), len(grains.spheres()),
+                            int(rows[-1, 7]), max([e.maxDamage for e in crush], default=0.0),
+                            float(np.max(rows[:, 8])) if crush else math.nan, len(grains.spheres()),
                             rows[-1, 5], time.process_time() - self.cpu if self.cpu is not None else math.nan])
         self.cpu = time.process_time()
 

@@ -86,6 +86,7 @@ def summary(exp):
         'nCrushed': int(sum(e.nCrushed for e in engines() if isinstance(e, BallastCrushEngine))),
         'nAbraded': int(sum(e.nAbraded for e in engines() if isinstance(e, BallastAbrasionEngine))),
         'maxDamage': float(cyc.maxDamage.max()) if n else 0.0,
+        'maxStressRatio': float(cyc.maxStressRatio.max()) if n else math.nan,
         'workPerCycleMean': float(cyc.work.mean()) if n else 0.0,
         'nGrainsInitial': first, 'nGrains': len(r), 'porosity': exp.porosity, 'bedTop': exp.bedTop,
         'nEscaped': exp.nEscaped, 'bedFile': exp.bedFile, 'loadSource': p.history().source, 'loadPeriod': rec.period,
