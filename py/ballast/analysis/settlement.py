@@ -1,0 +1,92 @@
+"""The sleeper's settlement against the number of load cycles over the runs of cyclic studies (the box
+test, docs/box.md "The study"; any experiment whose runs write cycles.csv with cycle and settlement):
+every run's curve, their mean per cycle, and the two laws box tests are read with fitted to each,
+logarithmic s = a + b ln N and power s = c N^d, with their R^2 (the first cycle's settlement is a's and
+c's share: both laws pass through N = 1). Reads the studies with ballast.study.data. NumPy, no YADE."""
+import math
+
+import numpy as np
+import pandas as pd
+
+from ..study.data import StudyRuns
+
+
+def curves(paths):
+    """The settlement curves of the finished runs of the studies (or records) at `paths`: a DataFrame with
+    study, runId, seed, cycle, settlement [m], resilient [m] (NaN where a run has none)."""
+    rows = []
+    for path in paths:
+        study = StudyRuns(path)
+        for run in study.runs:
+            c = run.cycles
+            if c is None or 'settlement' not in c:
+                continue
+            rows.append(pd.DataFrame({'study': path, 'runId': run.runId, 'seed': run.params.get('seed'),
+                                      'cycle': c['cycle'].astype(int), 'settlement': c['settlement'],
+                                      'resilient': c['resilient'] if 'resilient' in c else math.nan}))
+    if not rows:
+        raise ValueError('curves: no run with a cycles.csv (cycle, settlement) in %s' % ', '.join(paths))
+    return pd.concat(rows, ignore_index=True)
+
+
+def fitLaws(N, s):
+    """Least-squares fits of s = a + b ln N and of s = c N^d (a straight line in log-log, s > 0) to the cycles
+    N (>= 1) and settlements s [m]: {'log': {a, b, r2}, 'power': {c, d, r2}} (R^2 of each on s itself)."""
+    N, s = np.asarray(N, float), np.asarray(s, float)
+    if len(N) < 3 or np.any(N < 1):
+        raise ValueError('fitLaws: at least 3 cycles N >= 1 are needed, got %d (smallest %r)' % (len(N), N.min()))
+    x = np.log(N)
+    b, a = np.polyfit(x, s, 1)
+    out = {'log': {'a': float(a), 'b': float(b), 'r2': r2(s, a + b * x)}}
+    if np.all(s > 0):
+        d, lnc = np.polyfit(x, np.log(s), 1)
+        out['power'] = {'c': float(math.exp(lnc)), 'd': float(d), 'r2': r2(s, math.exp(lnc) * N ** d)}
+    return out
+
+
+def r2(y, fitted):
+    ss = float(np.sum((y - np.mean(y)) ** 2))
+    return 1.0 - float(np.sum((y - fitted) ** 2)) / ss if ss > 0 else 1.0
+
+
+def summary(frame):
+    """Per study: the mean and standard deviation of the settlement at every cycle all its runs reached, the
+    laws fitted to the mean and to each run."""
+    out = {}
+    for study, g in frame.groupby('study', sort=False):
+        last = int(g.groupby('runId').cycle.max().min())
+        common = g[g.cycle <= last]
+        mean = common.groupby('cycle').settlement.agg(['mean', 'std', 'count']).reset_index()
+        out[study] = {'runs': int(g.runId.nunique()), 'cycles': last,
+                      'settlementFirst': float(mean['mean'].iloc[0]), 'settlementLast': float(mean['mean'].iloc[-1]),
+                      'mean': fitLaws(mean.cycle, mean['mean']) if last >= 3 else None,
+                      'perRun': {rid: fitLaws(r.cycle, r.settlement) for rid, r in g.groupby('runId') if len(r) >= 3}}
+    return out
+
+
+def figure(frame, fits, path):
+    """Settlement against log N: every run thin, the mean of each study thick, its logarithmic law dashed."""
+    import matplotlib
+    matplotlib.use('Agg')
+    import matplotlib.pyplot as plt
+    from ..study.files import saveFigure
+    fig, ax = plt.subplots(figsize=(6.6, 4.4))
+    for k, (study, g) in enumerate(frame.groupby('study', sort=False)):
+        colour = 'C%d' % k
+        for _, r in g.groupby('runId'):
+            ax.semilogx(r.cycle, 1e3 * r.settlement, '-', color=colour, lw=0.6, alpha=0.5)
+        f = fits[study]
+        mean = g[g.cycle <= f['cycles']].groupby('cycle').settlement.mean()
+        ax.semilogx(mean.index, 1e3 * mean.values, '-', color=colour, lw=2.2,
+                    label='%s: mean of %d runs' % (study.rstrip('/').split('/')[-1], f['runs']))
+        if f['mean'] is not None:
+            law = f['mean']['log']
+            N = np.array(mean.index, float)
+            ax.semilogx(N, 1e3 * (law['a'] + law['b'] * np.log(N)), '--', color=colour, lw=1,
+                        label='a + b ln N: b = %.3g mm, R$^2$ = %.3f' % (1e3 * law['b'], law['r2']))
+    ax.set_xlabel('load cycles N')
+    ax.set_ylabel('permanent settlement [mm]')
+    ax.grid(True, which='both', alpha=0.3)
+    ax.legend(fontsize=7)
+    saveFigure(fig, path)
+    return path
