@@ -45,6 +45,27 @@ def test_the_seated_sleeper_carries_the_applied_load_and_its_weight(tmp_path):
     assert O.bodies[rec.sleeper].state.mass == pytest.approx(5.0, rel=1e-12)
 
 
+def test_crib_ballast_lies_beside_the_sleeper_up_to_its_depth(tmp_path):
+    from yade import O
+    from ballast.experiments import grains
+    test = BoxTest(results=str(tmp_path), crush=False, abrasion=False, cribDepth=0.04, **SMALL).prepare()
+    assert test.nCrib > 0
+    s = O.bodies[test.recorder.sleeper]
+    base = s.state.pos[2] - s.shape.extents[2]
+    x, r, _ = grains.arrays()
+    above = x[:, 2] - r > base + 1e-3            # grains wholly above the sleeper's underside: the crib
+    assert np.sum(above) > 0.5 * test.nCrib
+    assert np.all(np.abs(x[above, 0]) > SMALL['sleeperWidth'] / 2)   # none on or under the sleeper
+    # a crib of 0.04 m is under two grains deep here: its grains' tops mostly within one grain of it
+    assert np.median(x[above, 2] + r[above]) < base + 0.04 + SMALL['dMax']
+    assert test.nCrib == pytest.approx(0.6 * 2 * 0.1 * 0.12 * 0.04 / (np.pi / 6 * 0.025 ** 3), rel=0.5)
+    F = []
+    for _ in range(10):
+        O.run(100, True)
+        F.append(test.recorder.grainsForce())
+    assert np.mean(F) == pytest.approx(300.0 + 5 * G, rel=TOL_EQUILIBRIUM)   # the crib does not load the sleeper
+
+
 def test_a_short_run_writes_every_output(run):
     test, s = run
     for name in ('cycles.csv', 'samples.csv', 'grading.csv', 'crushes.csv', 'zones.csv', 'summary.json',

@@ -177,3 +177,48 @@ def press(exp, rig, force):
     O.forces.setPermF(pid, Vector3(0, 0, 0))   # a permanent force outlives its body in the force container
     O.bodies.erase(pid)
     return top
+
+
+def crib(exp, zBase):
+    """Crib ballast beside the sleeper (cribDepth above its underside at zBase [m]): a loose cloud of grains over
+    each side of the box (solidFraction of the crib's volume, from the run's seed) falls onto the bed with
+    friction, as ballast tipped into the cribs, while the sleeper is held where it sits; the grains that came to
+    rest on the sleeper are swept off; the others are then part of the bed. Returns how many stay."""
+    p = exp.p
+    sleeper = O.bodies[exp.rig.sleeper]
+    held = sleeper.state.blockedDOFs
+    sleeper.state.blockedDOFs = 'xyzXYZ'
+    sleeper.state.vel = Vector3(0, 0, 0)
+    rMax, gap = p['dMax'] / 2, 0.05 * p['dMin']
+    w, L, W = p['sleeperWidth'], p['boxLength'], p['boxWidth']
+    side = L / 2 - w / 2                       # each crib's length along x
+    top = zBase + p['cribDepth'] + p['dMax']   # the cloud starts above the crib's final top
+    n = 0
+    for sign in (-1, 1):
+        x0, x1 = sorted((sign * (w / 2 + rMax + gap), sign * (L / 2 - rMax - gap)))
+        vSolid = p['solidFraction'] * side * W * p['cribDepth']
+        h = 1.5 * vSolid / (CLOUD_SOLID * (x1 - x0) * (W - 2 * (rMax + gap)))
+        sp = pack.SpherePack()
+        sp.makeCloud((x0, -W / 2 + rMax + gap, top), (x1, W / 2 - rMax - gap, top + h), rMean=(p['dMin'] + p['dMax']) / 4,
+                     rRelFuzz=(p['dMax'] - p['dMin']) / (p['dMax'] + p['dMin']),
+                     num=int(math.ceil(1.5 * vSolid / meanCubedDiameterVolume(p['dMin'], p['dMax']))),
+                     seed=p['seed'] * 100 + 50 + (sign > 0))
+        kept = sorted((c[2], c[0], c[1], r) for c, r in sp)
+        vol = 0.0
+        for z, x, y, r in kept:
+            if vol >= vSolid:
+                break
+            O.bodies.append(utils.sphere((x, y, z), r, material=exp.rig.ballast, mask=scene.GRAIN_MASK))
+            vol += float(sphereVolume(r))
+            n += 1
+    tFall = math.sqrt(2 * (top + h - zBase) / 9.81)
+    exp.phases.say('crib: %d grains tipped beside the sleeper, %.3f m deep' % (n, p['cribDepth']))
+    exp.phases.run('crib', tEnd=O.time + tFall, simSpan=tFall, simStart=O.time, extra=grains.restInfo)
+    # the grains that came to rest on the sleeper are swept off, as a crib is levelled
+    zTop = sleeper.state.pos[2] + sleeper.shape.extents[2]
+    swept = [b.id for b in grains.spheres() if abs(b.state.pos[0]) <= w / 2 + b.shape.radius and b.state.pos[2] > zTop]
+    for i in swept:
+        O.bodies.erase(i)
+    exp.phases.run('crib', lambda: grains.unbalanced() < 0.05, tEnd=O.time + 0.05, extra=grains.restInfo)
+    sleeper.state.blockedDOFs = held
+    return n - len(swept)

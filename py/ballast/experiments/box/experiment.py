@@ -127,7 +127,7 @@ class BoxTest(Experiment):
     def __init__(self, parameters=None, **params):
         self.rig = self.recorder = None
         self.bedTop = self.porosity = self.bedFile = None
-        self.nEscaped, self.initial, self.gradings, self.frames = 0, None, [], []
+        self.nEscaped, self.nCrib, self.initial, self.gradings, self.frames = 0, 0, None, [], []
         Experiment.__init__(self, parameters, **params)
 
     def pieces(self):
@@ -171,6 +171,8 @@ class BoxTest(Experiment):
         O.dt = p['dtSafety'] * utils.PWaveTimeStep()
         self.say('seat: sleeper %.3g x %.3g x %.3g m, %.4g kg, on the bed at %.4f m (%d grains, porosity %.3f), %g N'
                  % (w, L, h, p['sleeperMass'], z0, len(r), self.porosity, history.seat))
+        if p['cribDepth'] > 0:
+            self.nCrib = bed.crib(self, z0)
         hist, t0 = [], O.time
 
         def still():
@@ -302,7 +304,8 @@ class BoxTest(Experiment):
     # ------------------------------------------------------------------ saving
     def state(self):
         return dict(self.baseState(), rig=runtime.ref(self.rig), recorder=runtime.ref(self.recorder),
-                    bedTop=self.bedTop, porosity=self.porosity, nEscaped=self.nEscaped, bedFile=self.bedFile,
+                    bedTop=self.bedTop, porosity=self.porosity, nEscaped=self.nEscaped, nCrib=self.nCrib,
+                    bedFile=self.bedFile,
                     initial=self.initial,
                     gradings=self.gradings, frames=self.frames)
 
@@ -311,6 +314,6 @@ class BoxTest(Experiment):
         exp = cls.__new__(cls)
         exp.setBaseState(s, ref)
         exp.rig, exp.recorder = ref(s['rig']), ref(s['recorder'])
-        for k in ('bedTop', 'porosity', 'nEscaped', 'bedFile', 'initial', 'gradings', 'frames'):
+        for k in ('bedTop', 'porosity', 'nEscaped', 'nCrib', 'bedFile', 'initial', 'gradings', 'frames'):
             setattr(exp, k, s[k])
         return exp

@@ -89,7 +89,7 @@ def summary(exp):
         'maxStressRatio': float(cyc.maxStressRatio.max()) if n else math.nan,
         'workPerCycleMean': float(cyc.work.mean()) if n else 0.0,
         'nGrainsInitial': first, 'nGrains': len(r), 'porosity': exp.porosity, 'bedTop': exp.bedTop,
-        'nEscaped': exp.nEscaped, 'bedFile': exp.bedFile, 'loadSource': p.history().source, 'loadPeriod': rec.period,
+        'nEscaped': exp.nEscaped, 'nCrib': exp.nCrib, 'bedFile': exp.bedFile, 'loadSource': p.history().source, 'loadPeriod': rec.period,
         'seatLoad': p.history().seat, 'peakLoad': p.history().peak,
         'massInitial': exp.initial['massInitial'], 'massGrains': float(np.sum(m)), 'massLost': lost,
         'massLedgerError': float(np.sum(m)) + lost - exp.initial['massInitial'],

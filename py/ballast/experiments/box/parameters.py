@@ -8,8 +8,8 @@ import json
 import math
 import os
 
-from ...params import (INT32_MAX, NUMBER_POSITIVE, Param, Parameters, anyText, between, boolean,
-                       checkDensityStep, flag, intBetween, positive, positiveInt, text)
+from ...params import (INT32_MAX, NUMBER_NONNEGATIVE, NUMBER_POSITIVE, Param, Parameters, anyText, between, boolean,
+                       checkDensityStep, flag, intBetween, nonNegative, positive, positiveInt, text)
 from ..oedometer.parameters import PARAMS as OEDOMETER, checkRolling
 from .loadhistory import LoadHistory, LoadHistoryError
 
@@ -45,6 +45,9 @@ PARAMS = dict({
                          positive, NUMBER_POSITIVE),
     'sleeperFriction': Param(0.5, 'rad', 'friction angle between the sleeper and the grains', between(0, math.pi / 2),
                              _PHI),
+    'cribDepth': Param(0.0, 'm', 'crib ballast: grains tipped beside the sleeper up to this height above its underside '
+                       '(at most sleeperHeight; 0: none, the sleeper sits on the bed\'s surface)', nonNegative,
+                       NUMBER_NONNEGATIVE),
     'tilt': Param(True, '-', 'the sleeper may tilt about the box\'s width axis (y) as well as settle; 0: settles only',
                   boolean, '0 or 1', flag),
     # the load
@@ -142,6 +145,8 @@ class BoxParameters(Parameters):
         if p['sleeperWidth'] > p['boxLength'] - 4 * p['dMax']:
             bad('sleeperWidth', 'leaves less than 2 dMax of ballast on either side in a box of length %g m (at most %g m)'
                 % (p['boxLength'], p['boxLength'] - 4 * p['dMax']))
+        if p['cribDepth'] > p['sleeperHeight']:
+            bad('cribDepth', 'higher than the sleeper, sleeperHeight = %g m' % p['sleeperHeight'])
         if p['sleeperGap'] * 2 >= p['boxWidth']:
             bad('sleeperGap', 'leaves no sleeper in a box of width %g m' % p['boxWidth'])
         if not p['loadFile'] and p['seatLoad'] >= p['peakLoad']:
