@@ -7,7 +7,7 @@ from yade import O, utils
 from yade.wrapper import Sphere
 
 from .. import runtime
-from . import chain
+from . import chain, grains
 from .oedometer import scene
 
 STIFFEN_TIME = 0.01     # [s] simulated time over which the existing contacts are stiffened to the true modulus
@@ -25,6 +25,19 @@ def restoreFriction(ballast, friction, steelFriction):
         if i.isReal:
             both = isinstance(O.bodies[i.id1].shape, Sphere) and isinstance(O.bodies[i.id2].shape, Sphere)
             i.phys.tangensOfFrictionAngle = grain if both else steel
+
+
+def still(bodyId, span, tol, after, unbalanced=None):
+    """A phase's end test (Phases.run's done): the body `bodyId` moved less than tol [m] along z over the last
+    span [s], O.time past `after` [s], and with `unbalanced` YADE's unbalanced force below it too."""
+    hist = []
+
+    def done():
+        hist.append((O.time, O.bodies[bodyId].state.pos[2]))
+        old = [z for t, z in hist if t <= O.time - span]
+        return (O.time >= after and bool(old) and abs(hist[-1][1] - old[-1]) < tol
+                and (unbalanced is None or grains.unbalanced() < unbalanced))
+    return done
 
 
 @runtime.persistent('Stiffener')

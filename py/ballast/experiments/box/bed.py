@@ -162,16 +162,9 @@ def press(exp, rig, force):
     plate.dynamic = True
     pid = O.bodies.append(plate)
     O.forces.setPermF(pid, Vector3(0, 0, -force))
-    hist = []
-    span, tol = PRESS_STILL
     t0 = O.time
-
-    def still():
-        hist.append((O.time, O.bodies[pid].state.pos[2]))
-        old = [z for t, z in hist if t <= O.time - span]
-        return O.time >= t0 + PRESS_TIME[0] and bool(old) and abs(hist[-1][1] - old[-1]) < tol and \
-            grains.unbalanced() < 0.01
-    exp.phases.run('press', still, tEnd=t0 + PRESS_TIME[1],
+    exp.phases.run('press', preparation.still(pid, *PRESS_STILL, after=t0 + PRESS_TIME[0], unbalanced=0.01),
+                   tEnd=t0 + PRESS_TIME[1],
                    extra=lambda: 'plate at %.4f m  %s' % (O.bodies[pid].state.pos[2], grains.restInfo()))
     top = float(O.bodies[pid].state.pos[2])
     O.forces.setPermF(pid, Vector3(0, 0, 0))   # a permanent force outlives its body in the force container

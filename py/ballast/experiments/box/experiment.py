@@ -24,7 +24,7 @@ from yade.wrapper import FrictMat, InterpolatingDirectedForceEngine
 from ... import runtime
 from ...engines import BallastAbrasionEngine, BallastCrushEngine
 from ...params import ParamError, requireWritableDir, validate
-from .. import chain, grains, timestep
+from .. import chain, grains, preparation, timestep
 from ..base import Experiment
 from ..oedometer import scene
 from . import bed, outputs
@@ -46,14 +46,14 @@ class Recorder:
     CYCLE_COLUMNS = ('cycle', 't', 'settlement', 'settlementPeak', 'resilient', 'work', 'crushes', 'abrasions',
                      'nCrushed', 'nAbraded', 'maxDamage', 'maxStressRatio', 'nGrains', 'tilt', 'cpuSeconds')
 
-    def __init__(self, sleeper=None, z0=None, t0=None, period=None, mass=None):
-        self.sleeper, self.z0, self.t0, self.period, self.mass = sleeper, z0, t0, period, mass
+    def __init__(self, sleeper=None, z0=None, t0=None, period=None):
+        self.sleeper, self.z0, self.t0, self.period = sleeper, z0, t0, period
         self.samples, self.cycles = [], []   # rows of samples.csv, of cycles.csv
         self.start = None                    # index in samples of the current cycle's first row
         self.cpu = None                      # process CPU [s] at the current cycle's start (not saved: per process)
 
     def state(self):
-        return {k: getattr(self, k) for k in ('sleeper', 'z0', 't0', 'period', 'mass', 'samples', 'cycles', 'start')}
+        return {k: getattr(self, k) for k in ('sleeper', 'z0', 't0', 'period', 'samples', 'cycles', 'start')}
 
     @classmethod
     def fromState(cls, s, ref=None):
@@ -173,14 +173,10 @@ class BoxTest(Experiment):
                  % (w, L, h, p['sleeperMass'], z0, len(r), self.porosity, history.seat))
         if p['cribDepth'] > 0:
             self.nCrib = bed.crib(self, z0)
-        hist, t0 = [], O.time
-
-        def still():
-            hist.append((O.time, O.bodies[rig.sleeper].state.pos[2]))
-            old = [z for t, z in hist if t <= O.time - SEAT_STILL[0]]
-            return O.time >= t0 + SEAT_TIME[0] and bool(old) and abs(hist[-1][1] - old[-1]) < SEAT_STILL[1]
-        self.runUntil(still, tEnd=t0 + SEAT_TIME[1], phase='seat', checkEvery=100)
-        self.recorder = Recorder(rig.sleeper, None, None, history.period, float(np.sum(grains.arrays()[2])))
+        t0 = O.time
+        self.runUntil(preparation.still(rig.sleeper, *SEAT_STILL, after=t0 + SEAT_TIME[0]), tEnd=t0 + SEAT_TIME[1],
+                      phase='seat', checkEvery=100)
+        self.recorder = Recorder(rig.sleeper, None, None, history.period)
         self.adopt()
 
     def startCycling(self):

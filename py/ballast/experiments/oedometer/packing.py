@@ -168,24 +168,16 @@ class StoredPacking:
         O.forces.setPermF(self._plate, Vector3(0, 0, -p['pressForce']))
         tShort, tLong = self.PRESS_TIME
         t0 = O.time
-        exp.phases.run('press', self._still(exp, *self.PRESS_STILL, after=t0 + tShort), tEnd=t0 + tLong,
+        exp.phases.run('press', preparation.still(self._plate, *self.PRESS_STILL, after=t0 + tShort, unbalanced=0.01),
+                       tEnd=t0 + tLong,
                        extra=lambda: 'plate at %.4f m  %s' % (O.bodies[self._plate].state.pos[2], grains.restInfo()))
         self.restoreFriction(exp)
         O.forces.setPermF(self._plate, Vector3(0, 0, -p['seatForce']))
         t0 = O.time
-        exp.phases.run('press', self._still(exp, *self.SEAT_STILL, after=t0 + self.SEAT_STILL[0]), tEnd=t0 + 0.2)
+        exp.phases.run('press', preparation.still(self._plate, *self.SEAT_STILL, after=t0 + self.SEAT_STILL[0],
+                                                  unbalanced=0.01), tEnd=t0 + 0.2)
         exp.phases.say('press: %g N then %g N, plate at %.4f m' % (p['pressForce'], p['seatForce'],
                                                                     O.bodies[self._plate].state.pos[2]))
-
-    def _still(self, exp, span, tol, after):
-        """A phase's end test: forces balanced and the plate moved less than tol [m] over span [s], after `after`."""
-        hist = []
-
-        def done():
-            hist.append((O.time, O.bodies[self._plate].state.pos[2]))
-            old = [z for t, z in hist if t <= O.time - span]
-            return O.time >= after and bool(old) and abs(hist[-1][1] - old[-1]) < tol and grains.unbalanced() < 0.01
-        return done
 
     def restoreFriction(self, exp):
         preparation.restoreFriction(self.rig.ballast, exp.p['friction'], exp.p['steelFriction'])
