@@ -103,6 +103,15 @@ def test_the_mass_ledger_is_exact(run):
     assert s['massGrains'] + s['massLost'] == pytest.approx(s['massInitial'], rel=1e-12)
 
 
+def test_abrasion_under_the_rolling_law_keeps_the_ledger(tmp_path):
+    """strength below eq. 7's pressure of the linear law (3 E / pi = 2.86e9 Pa at E = 3e9): grains in contact
+    abrade at each check; what they lose is in the ledger to the last digit."""
+    test = BoxTest(results=str(tmp_path), **dict(SMALL, crush=False, strength=2e9, abrasionPeriod=400, cycles=1))
+    s = test.run()
+    assert s['nAbraded'] > 0 and s['massLost'] > 0 and s['params']['rollingFriction'] == 0.3
+    assert abs(s['massLedgerError']) <= 1e-12 * s['massInitial']
+
+
 def test_every_crush_is_mapped_once(run):
     test, s = run
     c = pd.read_csv(os.path.join(test.out, 'crushes.csv'))
