@@ -182,3 +182,24 @@ def test_a_binary_or_non_utf8_table_is_refused_naming_the_file(tmp_path, content
     script = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), 'scripts', 'study.py')
     p = subprocess.run([sys.executable, script, 'run', str(path), '--dry-run'], capture_output=True, text=True, timeout=120)
     assert p.returncode == 2 and str(path) in p.stderr and 'Traceback' not in p.stderr, p.stderr[-2000:]
+
+
+def test_a_tables_relative_paths_start_from_its_own_folder(tmp_path, monkeypatch):
+    """continueFrom 'states/end.yade.gz' in a table under tmp/tables means tmp/tables/states/end.yade.gz, for
+    the study that checks the table and for a run that reads a copy of it elsewhere (TABLE_DIR)."""
+    from ballast.study.table import TABLE_DIR, Table, resolvePaths, tableRow
+    folder = tmp_path / 'tables'
+    (folder / 'states').mkdir(parents=True)
+    (folder / 'states' / 'end.yade.gz').write_bytes(b'state')
+    (folder / 'box.table').write_text("description seed cycles continueFrom\nslice2 1 5 'states/end.yade.gz'\n")
+    want = str(folder / 'states' / 'end.yade.gz')
+    params = Table(str(folder / 'box.table')).check('box')
+    assert params[2]['continueFrom'] == want
+    copy = tmp_path / 'scratch' / 'table'
+    copy.parent.mkdir()
+    copy.write_text((folder / 'box.table').read_text())
+    monkeypatch.setenv(TABLE_DIR, str(folder))
+    assert tableRow(str(copy), 2, 'box')['continueFrom'] == repr(want)
+    # absolute paths, empty ones and the paths the study sets itself are left as they are
+    cells = {'continueFrom': "'/abs/x.yade.gz'", 'loadFile': "''", 'results': "'out'"}
+    assert resolvePaths(cells, 'box', str(folder)) == cells

@@ -32,6 +32,7 @@ import time
 import traceback
 
 from .files import codeSha1, moveSynced, readFiles, readSummary, sha1, writeAtomic
+from .table import TABLE_DIR
 
 # Set on Ctrl-C by the local executor: every running run kills its yade and returns.
 STOP = threading.Event()
@@ -314,7 +315,8 @@ def runRow(spec, leader=None):
         cmd = command(spec, script, results, pdir)
         env = dict(os.environ)
         env.update(spec['env'])
-        env.update({'YADE_BATCH': '%s:%d' % (table, line), 'DISPLAY': ''})
+        # the row's relative paths start from the folder of the table the study read, not from this copy's
+        env.update({'YADE_BATCH': '%s:%d' % (table, line), 'DISPLAY': '', TABLE_DIR: os.path.dirname(spec['tableName'])})
         res['command'] = ' '.join('%s=%s' % kv for kv in sorted(spec['env'].items())) + ' YADE_BATCH=%s:%d ' % (table, line) + \
             ' '.join(shlex.quote(c) for c in cmd)
         logPath = os.path.join(work, 'run.log')

@@ -37,7 +37,7 @@ from .files import codeSha1, readSummary, sha1, writeAtomic
 from .options import OPTIONS, StudyError, experimentDeclaration, optionValue
 from .records import hasRecord, keepRecord, recordPath, writeIndex
 from .runner import clearWork, failedLog, finalizeShipped, lastError
-from .table import Table
+from .table import Table, resolvePaths, tableDir
 
 # yade-batch's !COLUMNS that are not environment variables of the run
 BATCH_COLUMNS = ('!SCRIPT', '!EXEC', '!AFFINITY', '!COUNT')
@@ -121,7 +121,7 @@ class Study:
         they no longer pass the check."""
         cells = {k: v if isinstance(v, str) else str(v) for k, v in row.items() if k in self.declaration.params and v != '*'}
         try:
-            return dict(self.declaration.check(cells, text=True))
+            return dict(self.declaration.check(resolvePaths(cells, self.declaration, tableDir(self.tablePath)), text=True))
         except ParamError:
             return None
 

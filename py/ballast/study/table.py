@@ -145,7 +145,7 @@ class Table:
         params, bad = {}, []
         for n, row in self.rows:
             try:
-                params[n] = d.check(self.cells(n), text=True)
+                params[n] = d.check(resolvePaths(self.cells(n), d, tableDir(self.path)), text=True)
             except ParamError as e:
                 if e.name in row:
                     bad.append('%s:%d: column %s, value %s: %s' % (self.path, n, e.name, row[e.name], e))
@@ -155,6 +155,31 @@ class Table:
             raise StudyError('%d row(s) refused:\n  %s%s' % (
                 len(bad), '\n  '.join(bad[:10]), '\n  ...' if len(bad) > 10 else ''))
         return params
+
+
+TABLE_DIR = 'BALLAST_TABLE_DIR'   # a run's environment: the folder of the table its row came from
+
+
+def resolvePaths(cells, declaration, base):
+    """The cells with a relative path in a parameter of unit 'path' (but those the study sets) made absolute
+    against `base`: a table's paths are relative to its own folder, wherever its runs run. Other cells as
+    they are."""
+    d = experimentDeclaration(declaration)
+    out = dict(cells)
+    for col, raw in cells.items():
+        p = d.params.get(col)
+        if p is None or p.unit != 'path' or col in d.studySets():
+            continue
+        value = p.fromText(raw)
+        if isinstance(value, str) and value and not os.path.isabs(value):
+            out[col] = repr(os.path.normpath(os.path.join(base, value)))
+    return out
+
+
+def tableDir(path):
+    """The folder a table's relative paths start from: the run's TABLE_DIR if the study set it (the run reads a
+    copy of the table in a scratch folder), else the table's own folder."""
+    return os.environ.get(TABLE_DIR) or os.path.dirname(os.path.abspath(path))
 
 
 def tableRow(path, line, declaration=None):
@@ -179,7 +204,7 @@ def tableRow(path, line, declaration=None):
         except Exception:
             raise ParamError(col, "%s: cannot read %s = %r from %s:%d (numbers as they are, text quoted: 'planar4')" % (
                 d.owner, col, raw, path, line)) from None
-    return cells
+    return resolvePaths(cells, d, tableDir(path))
 
 
 def cellValue(column, cell, declaration=None):
