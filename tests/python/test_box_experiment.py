@@ -146,6 +146,7 @@ def test_the_bed_is_stored_and_a_second_run_of_the_seed_repeats_the_first(run):
 def test_a_saved_state_reopens_and_goes_on(run, tmp_path):
     test, s = run
     again = BoxTest.reopen(os.path.join(test.out, 'state-end.yade.gz'), results=str(tmp_path))
+    assert len(again.recorder.samples) <= 2   # a state keeps the current cycle's samples only (one at its end)
     s2 = again.load(1)
     cyc = pd.read_csv(os.path.join(again.out, 'cycles.csv'))
     old = pd.read_csv(os.path.join(test.out, 'cycles.csv'))

@@ -48,7 +48,9 @@ class Recorder:
 
     def __init__(self, sleeper=None, z0=None, t0=None, period=None):
         self.sleeper, self.z0, self.t0, self.period = sleeper, z0, t0, period
-        self.samples, self.cycles = [], []   # rows of samples.csv, of cycles.csv
+        # the rows of the current cycle (samples.csv holds them all: BoxTest.sample appends each), of cycles.csv;
+        # a saved state keeps only the current cycle's, so it stays small over thousands of cycles
+        self.samples, self.cycles = [], []
         self.start = None                    # index in samples of the current cycle's first row
         self.cpu = None                      # process CPU [s] at the current cycle's start (not saved: per process)
 
@@ -95,9 +97,9 @@ class Recorder:
         self.samples.append(row)
         if self.start is None:
             self.start, self.cpu = len(self.samples) - 1, time.process_time()
-        elif row[1] > self.samples[self.start][1]:   # a cycle ended at this sample
+        elif row[1] > self.samples[self.start][1]:   # a cycle ended at this sample: it opens the next one
             self.closeCycle(len(self.samples) - 1)
-            self.start = len(self.samples) - 1
+            self.samples, self.start = self.samples[-1:], 0
             return int(row[1])
         return 0
 
@@ -218,8 +220,9 @@ class BoxTest(Experiment):
         """The recorder's sample (a callback at simulated times); after the cycles of the 1-2-5 series (1, 2, 5,
         10, 20, ...) the grading and a VTK frame."""
         k = self.recorder.sample()
-        t, _, F, Fgrains, settlement = self.recorder.samples[-1][:5]
-        plot.addData(t=t, F=F, Fgrains=Fgrains, settlement=settlement)
+        row = self.recorder.samples[-1]
+        outputs.appendSample(self, row)
+        plot.addData(**dict(zip(('t', 'cycle', 'F', 'Fgrains', 'settlement'), row[:5])))
         if k:
             outputs.writeCycles(self)   # a killed run keeps its cycles (written atomically)
             if outputs.gradedCycle(k):

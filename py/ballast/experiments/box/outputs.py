@@ -2,8 +2,9 @@
 
 * cycles.csv     a row per cycle: permanent settlement at its end [m], largest settlement in it, resilient
                  deflection, work of the load over it [J], crushes, abrasions, the largest fatigue damage
-* samples.csv    `samples` rows a cycle: applied load and the grains' force on the sleeper [N], settlement
-                 [m], tilt [rad], crushes and abrasions so far
+* samples.csv    `samples` rows a cycle, appended as they are taken: applied load and the grains' force on the
+                 sleeper [N], settlement [m], tilt [rad], crushes and abrasions so far (a run that goes on
+                 from a state: from there)
 * grading.csv    percentage passing each sieve (grading.SIEVES_MM) after cycles 0, 1, 2, 5, 10, 20, ... and
                  the last, with Marsal's B_g, Hardin's B_r and Indraratna's BBI against cycle 0
 * crushes.csv    every crush: time, cycle, position, radius, depth below the sleeper's underside, zone
@@ -100,6 +101,16 @@ def summary(exp):
         'stepsPerCycle': rec.period / O.dt}
 
 
+def appendSample(exp, row):
+    """A row of samples.csv, appended as it is taken (a run that goes on from a state writes its own from there)."""
+    path = os.path.join(exp.out, 'samples.csv')
+    new = not os.path.exists(path)
+    with open(path, 'a') as fh:
+        if new:
+            fh.write(','.join(exp.recorder.COLUMNS) + '\n')
+        fh.write(','.join('%.9g' % v for v in row) + '\n')
+
+
 def writeCycles(exp):
     rec = exp.recorder
     writeAtomic(os.path.join(exp.out, 'cycles.csv'),
@@ -110,8 +121,7 @@ def write(exp):
     """Every output file; returns the summary."""
     rec, out = exp.recorder, exp.out
     s = summary(exp)
-    files = {'cycles.csv': pd.DataFrame(rec.cycles, columns=rec.CYCLE_COLUMNS),
-             'samples.csv': pd.DataFrame(rec.samples, columns=rec.COLUMNS), 'crushes.csv': crushes(exp)}
+    files = {'cycles.csv': pd.DataFrame(rec.cycles, columns=rec.CYCLE_COLUMNS), 'crushes.csv': crushes(exp)}
     g = pd.DataFrame([dict({'cycle': x['cycle'], 'Bg': x['Bg'], 'Br': x['Br'], 'BBI': x['BBI']},
                            **{'P%g' % a: v for a, v in zip(gr.SIEVES_MM, x['passing'])}) for x in exp.gradings])
     files['grading.csv'] = g
