@@ -313,6 +313,7 @@ class BoxTest(Experiment):
         exp = cls.__new__(cls)
         exp.setBaseState(s, ref)
         exp.rig, exp.recorder = ref(s['rig']), ref(s['recorder'])
-        for k in ('bedTop', 'porosity', 'nEscaped', 'nCrib', 'bedFile', 'initial', 'gradings', 'frames'):
+        for k in ('bedTop', 'porosity', 'nEscaped', 'bedFile', 'initial', 'gradings', 'frames'):
             setattr(exp, k, s[k])
+        exp.nCrib = s.get('nCrib', 0)   # states saved before crib ballast existed have none
         return exp
