@@ -92,13 +92,19 @@ namespace ranges {
 	const ParameterRange fatigueHysteresis{"fatigueHysteresis", 0.001, 0.5, true, true, false, false,
 	                                       "a number in [0.001, 0.5]"};
 	const ParameterRange strength{"strength", 0, kInf, false, false, false, false, "a finite number > 0"};
+	// cycle jumping (CycleJump.hpp): two halves of at least one cycle each; a jump may move damage by less than 1
+	const ParameterRange jumpWindow{"jumpWindow", 2, 10000, true, true, true, false, "an integer in [2, 10000]"};
+	const ParameterRange jumpSteady{"jumpSteady", 0, 1, false, true, false, false, "a number in (0, 1]"};
+	const ParameterRange jumpMaxDamage{"jumpMaxDamage", 0, 1, false, false, false, false, "a number in (0, 1)"};
+	const ParameterRange jumpMargin{"jumpMargin", 0, 10000, true, true, true, false, "an integer in [0, 10000]"};
 }  // namespace ranges
 
 const std::vector<const ParameterRange*>& parameterRanges()
 {
 	static const std::vector<const ParameterRange*> all = {
 	        &ranges::ft0,  &ranges::m, &ranges::rMin, &ranges::seed, &ranges::weibullModulus, &ranges::fatigueExponent,
-	        &ranges::fatigueEndurance, &ranges::fatigueHysteresis, &ranges::strength};
+	        &ranges::fatigueEndurance, &ranges::fatigueHysteresis, &ranges::strength, &ranges::jumpWindow, &ranges::jumpSteady,
+	        &ranges::jumpMaxDamage, &ranges::jumpMargin};
 	return all;
 }
 

@@ -59,6 +59,10 @@ namespace ranges {
 	extern const ParameterRange fatigueEndurance;   // [-]
 	extern const ParameterRange fatigueHysteresis;  // [-]
 	extern const ParameterRange strength;           // abrasion, eq. 6 [Pa]
+	extern const ParameterRange jumpWindow;         // CycleJump.hpp [cycles]
+	extern const ParameterRange jumpSteady;         // [-]
+	extern const ParameterRange jumpMaxDamage;      // [-]
+	extern const ParameterRange jumpMargin;         // [cycles]
 }  // namespace ranges
 
 // Every range above, in the order of the list.

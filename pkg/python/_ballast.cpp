@@ -13,6 +13,7 @@ namespace binding {
 	void registerBallastCrushEngine();
 	void registerWeibull();
 	void registerFatigue();
+	void registerCycleJump();
 	void registerBallastAbrasionEngine();
 	void registerFragmentPattern();
 	void registerInputCheck();
@@ -36,6 +37,7 @@ BOOST_PYTHON_MODULE(_ballast)
 	registerBallastCrushEngine();
 	registerWeibull();
 	registerFatigue();
+	registerCycleJump();
 	registerBallastAbrasionEngine();
 	registerFragmentPattern();
 	registerInputCheck();

@@ -297,6 +297,31 @@ def checkDensityStep(bad, step, paperStep, timeStep):
                            'nothing would be scaled; give 0 (off) or at least %.3g s' % (step, paperStep, paperStep))
 
 
+# cycle jumping, beyond the paper (docs/cycles.md; the law is the C++ core's pkg/CycleJump.hpp): an option of every
+# cyclic experiment
+CYCLE_JUMP = {
+    'jump': Param(False, '-', 'cycle jumping: once each grain\'s fatigue damage grows steadily over the last jumpWindow '
+                  'simulated cycles, advance it over many cycles at once, never over a crush (the cycle a grain fails in '
+                  'is simulated), then simulate again; the settlement of the jumped cycles is extrapolated from a law '
+                  'fitted to the simulated ones, not simulated (docs/cycles.md). Needs fatigue',
+                  boolean, 'True or False', flag),
+    'jumpWindow': Param(10, 'cycles', 'simulated cycles without a crush or an abrasion whose damage gives each grain\'s '
+                        'rate per cycle; the rates of its two halves tell how steady it is', *coreRange('jumpWindow')),
+    'jumpSteady': Param(0.2, '-', 'a grain whose rate differs between the window\'s halves by |b - a| limits a jump to '
+                        'jumpSteady jumpMaxDamage / |b - a| cycles (the damage it extrapolates is that uncertain)',
+                        *coreRange('jumpSteady')),
+    'jumpMaxDamage': Param(0.05, '-', 'no grain\'s damage D may grow by more than this in one jump',
+                           *coreRange('jumpMaxDamage')),
+    'jumpMargin': Param(1, 'cycles', 'simulated cycles left between the end of a jump and the cycle in which the first '
+                        'grain is predicted to fail (at its largest damaging peak of the window)', *coreRange('jumpMargin')),
+}
+
+
+def checkCycleJump(bad, p):
+    """The cross-check of every cyclic experiment: jumping needs the fatigue damage it advances."""
+    if p['jump'] and not (p['fatigue'] and p['crush']):
+        bad('jump', 'cycle jumping advances fatigue damage: it needs fatigue = 1 and crush = 1')
+
 # PyRunner's (YADE PeriodicEngine's) own settings, checked as the engines' parameters are: a negative or
 # NaN period switches a PeriodicEngine off without a word
 PERIODIC = {

@@ -8,7 +8,7 @@ import pytest
 
 import ballast._ballast as B
 from ballast import params
-from ballast.params import ABRASION, CRUSH, ParamError, validate
+from ballast.params import ABRASION, CRUSH, CYCLE_JUMP, ParamError, validate
 
 INF = math.inf
 # (lower, upper, lowerClosed, upperClosed, integer, zeroAllowed, words), as the engines' documentation gives them
@@ -22,8 +22,12 @@ EXPECTED = {
     'fatigueEndurance': (0.0, 1.0, True, False, False, False, 'a number in [0, 1)'),
     'fatigueHysteresis': (0.001, 0.5, True, True, False, False, 'a number in [0.001, 0.5]'),
     'strength': (0.0, INF, False, False, False, False, 'a finite number > 0'),
+    'jumpWindow': (2.0, 10000.0, True, True, True, False, 'an integer in [2, 10000]'),
+    'jumpSteady': (0.0, 1.0, False, True, False, False, 'a number in (0, 1]'),
+    'jumpMaxDamage': (0.0, 1.0, False, False, False, False, 'a number in (0, 1)'),
+    'jumpMargin': (0.0, 10000.0, True, True, True, False, 'an integer in [0, 10000]'),
 }
-TABLE = dict(CRUSH, **ABRASION)
+TABLE = dict(CRUSH, **ABRASION, **CYCLE_JUMP)
 
 
 def test_the_ranges_are_exported_as_declared():
@@ -50,6 +54,11 @@ ENTRIES = {
     'fatigueEndurance': [lambda v: B.fatigueCheck([0.5], [0.02], FRESH, 2.0, v, 0.1, 0.0)],
     'fatigueHysteresis': [lambda v: B.fatigueCheck([0.5], [0.02], FRESH, 2.0, 0.5, v, 0.0)],
     'strength': [lambda v: B.abrasionCheck([0.02], [0], [-1], [1.0], [0.02], [0.0], [1e-6], v, 0.0)],
+    # a window of v cycles needs v + 1 rows of damage (3 where v is refused anyway)
+    'jumpWindow': [lambda v: B.cycleJumpPlan(np.zeros((v + 1 if 2 <= v <= 10000 else 3, 1)), [0.0], 5, v, 0.2, 0.05, 1)],
+    'jumpSteady': [lambda v: B.cycleJumpPlan(np.zeros((3, 1)), [0.0], 5, 2, v, 0.05, 1)],
+    'jumpMaxDamage': [lambda v: B.cycleJumpPlan(np.zeros((3, 1)), [0.0], 5, 2, 0.2, v, 1)],
+    'jumpMargin': [lambda v: B.cycleJumpPlan(np.zeros((3, 1)), [0.0], 5, 2, 0.2, 0.05, v)],
 }
 
 
@@ -86,7 +95,8 @@ def test_python_and_the_binding_refuse_the_same_values(name):
 @pytest.mark.parametrize('name,argument,value', [
     ('ft0', 'ft0', 0.0), ('m', 'm', 3.5), ('rMin', 'rMin', -1.0), ('seed', 'seed', 2 ** 63),
     ('weibullModulus', 'modulus', 0.5), ('fatigueExponent', 'exponent', 0.5), ('fatigueEndurance', 'endurance', 1.0),
-    ('fatigueHysteresis', 'hysteresis', 0.7), ('strength', 'strength', -1.0)])
+    ('fatigueHysteresis', 'hysteresis', 0.7), ('strength', 'strength', -1.0), ('jumpWindow', 'window', 1),
+    ('jumpSteady', 'steady', 0.0), ('jumpMaxDamage', 'maxDamage', 1.0), ('jumpMargin', 'margin', -1)])
 def test_both_say_the_same_words(name, argument, value):
     words = EXPECTED[name][-1]
     with pytest.raises(ParamError) as e:

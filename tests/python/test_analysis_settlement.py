@@ -1,5 +1,5 @@
-"""ballast.analysis.settlement: the laws recovered from settlements made with them (by hand), the curves
-read from a study's records, the mean over runs (no YADE)."""
+"""ballast.analysis.settlement: the curves read from a study's records, the mean over runs and their laws
+(ballast.settlementlaws, tested in test_settlementlaws.py) (no YADE)."""
 import json
 import math
 import os
@@ -8,18 +8,6 @@ import numpy as np
 import pytest
 
 from ballast.analysis import settlement
-
-
-def test_a_logarithmic_and_a_power_settlement_give_their_laws_back():
-    N = np.arange(1, 201)
-    fit = settlement.fitLaws(N, 1e-4 + 5e-5 * np.log(N))
-    assert fit['log']['a'] == pytest.approx(1e-4, rel=1e-9) and fit['log']['b'] == pytest.approx(5e-5, rel=1e-9)
-    assert fit['log']['r2'] == pytest.approx(1.0, abs=1e-12) and fit['power']['r2'] < 1 - 1e-3
-    fit = settlement.fitLaws(N, 2e-4 * N ** 0.2)
-    assert fit['power']['c'] == pytest.approx(2e-4, rel=1e-9) and fit['power']['d'] == pytest.approx(0.2, rel=1e-9)
-    assert fit['power']['r2'] == pytest.approx(1.0, abs=1e-12) and fit['log']['r2'] < 1 - 1e-3
-    with pytest.raises(ValueError, match='at least 3 cycles N >= 1'):
-        settlement.fitLaws([0, 1, 2], [1, 2, 3])
 
 
 def study(root, curves):

@@ -42,16 +42,27 @@ class BallastCrushEngine(BallastEngine):
 
     def _componentState(self):
         d = self.__dict__
-        return {'replacements': d['_replacements'].state(), 'fatigue': d['_fatigue'].state()}
+        return {'replacements': d['_replacements'].state(), 'fatigue': d['_fatigue'].state(),
+                'fatiguePeaks': d['_fatigue'].peaksState()}
 
     def _setComponentState(self, s):
         self.__dict__['_replacements'].setState(s['replacements'])
-        self.__dict__['_fatigue'].setState(s['fatigue'])
+        self.__dict__['_fatigue'].setState(s['fatigue'], s.get('fatiguePeaks'))
 
     def fatigueState(self, ids=None):
         """Fatigue state by body id, an (n,4) array: damage D [-], running extreme of s [-], rising (1/0),
         damaging peaks; rows of ids (default: every id up to the largest seen)."""
         return self.__dict__['_fatigue'].of(ids)
+
+    def takeFatiguePeaks(self, ids):
+        """The largest damaging peak of sigma_e / f_t [-] of each grain of ids since the last call (0 if none), for
+        cycle jumping (docs/cycles.md)."""
+        return self.__dict__['_fatigue'].takePeaks(ids)
+
+    def advanceFatigue(self, ids, damage, peaks):
+        """Cycle jumping (docs/cycles.md): the grains ids take damage [-] (an array) and peaks more damaging peaks."""
+        self.__dict__['_fatigue'].advance(ids, damage, peaks)
+        self.__dict__['maxDamage'] = float(np.max(self.fatigueState(ids)[:, 0])) if len(ids) else self.maxDamage
 
     def _summary(self):
         return 'nCrushed=%d volumeLost=%.4g m^3 massLost=%.4g kg' % (self.nCrushed, self.volumeLost, self.massLost)

@@ -1,6 +1,7 @@
 """Fatigue of the grains (docs/fatigue.md): the state of every grain by body id, an (n, 4) array of
 damage D [-], the running extreme of s = sigma_e / f_t [-], rising (1/0) and the damaging peaks;
-the Basquin-Miner update is the C++ core's ``fatigueCheck``."""
+the Basquin-Miner update is the C++ core's ``fatigueCheck``. Beside it, each grain's largest damaging peak
+since it was last taken (cycle jumping's failure bound, docs/cycles.md)."""
 import base64
 
 import numpy as np
@@ -13,6 +14,7 @@ FRESH = (0.0, 0.0, 1.0, 0.0)  # a new grain: undamaged, no extreme yet, rising, 
 class FatigueState:
     def __init__(self):
         self.rows = None   # (n, 4) by body id, grown on demand
+        self.peaks = None  # (n,) by body id: the largest damaging peak of s since takePeaks, 0 if none
 
     def of(self, ids=None):
         """Rows of ids (default: every id up to the largest seen), fresh where never seen."""
@@ -39,16 +41,51 @@ class FatigueState:
     def check(self, ratio, radii, ids, exponent, endurance, hysteresis, rMin):
         """One check of s = ratio for the grains ids: (crush, the damage D of each) (docs/fatigue.md)."""
         F = self.grown(ids)
-        F[ids], crush = _ballast.fatigueCheck(ratio, radii, F[ids], exponent, endurance, hysteresis, rMin)
+        before = F[ids]
+        F[ids], crush = _ballast.fatigueCheck(ratio, radii, before, exponent, endurance, hysteresis, rMin)
+        counted = F[ids, 3] > before[:, 3]
+        if counted.any():   # the peak counted is the running maximum before the sample that ended it
+            P = self.peaksGrown(len(F))
+            at = ids[counted]
+            P[at] = np.maximum(P[at], before[counted, 1])
         return crush, F[ids, 0]
+
+    def peaksGrown(self, n):
+        if self.peaks is None or len(self.peaks) < n:
+            P = np.zeros(n)
+            if self.peaks is not None:
+                P[:len(self.peaks)] = self.peaks
+            self.peaks = P
+        return self.peaks
+
+    def takePeaks(self, ids):
+        """The largest damaging peak of s of each of ids since the last take (0 if none); starts them afresh."""
+        ids = np.asarray(ids, dtype=np.int64)
+        P = self.peaksGrown(int(np.max(ids)) + 1 if len(ids) else 0)
+        out = P[ids].copy()
+        P[ids] = 0.0
+        return out
+
+    def advance(self, ids, damage, peaks):
+        """Cycle jumping: the grains ids take `damage` [-] more damage and `peaks` more damaging peaks each."""
+        F = self.grown(np.asarray(ids))
+        F[ids, 0] += damage
+        F[ids, 3] += peaks
 
     def fresh(self, ids):
         """Fragments start undamaged."""
         self.grown(np.asarray(ids))[ids] = FRESH
+        if self.peaks is not None:
+            self.peaksGrown(len(self.rows))[ids] = 0.0
 
     def state(self):
-        """Bitwise: base64 of the float64 array (None before the first check)."""
+        """Bitwise: base64 of the float64 arrays (None before the first check)."""
         return None if self.rows is None else base64.b64encode(np.ascontiguousarray(self.rows).tobytes()).decode('ascii')
 
-    def setState(self, s):
+    def peaksState(self):
+        return None if self.peaks is None else base64.b64encode(np.ascontiguousarray(self.peaks).tobytes()).decode('ascii')
+
+    def setState(self, s, peaks=None):
+        """The arrays back (states saved before peaks were kept have none: they start at 0)."""
         self.rows = None if s is None else np.frombuffer(base64.b64decode(s), dtype=float).reshape(-1, 4).copy()
+        self.peaks = None if peaks is None else np.frombuffer(base64.b64decode(peaks), dtype=float).copy()

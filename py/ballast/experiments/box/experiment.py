@@ -27,10 +27,11 @@ from ...params import ParamError, requireWritableDir, validate
 from .. import chain, grains, preparation, timestep
 from ..base import Experiment
 from ..oedometer import scene
+from ..cyclejump import CycleJumper
 from . import bed, outputs
 from .parameters import OWNER, PARAMS, BoxParameters
 
-LOAD, RECORDER, SAVER = 'boxLoad', 'boxRecorder', 'boxSaver'
+LOAD, RECORDER, SAVER, JUMPER = 'boxLoad', 'boxRecorder', 'boxSaver', 'boxJumper'
 SEAT_STILL = (0.01, 2e-6)     # ([s], [m]): seated when the sleeper moved less than this over that time
 SEAT_TIME = (0.02, 0.2)       # [s] shortest and longest seating (a bed of spheres creeps under a sleeper: docs/box.md)
 SLEEPER_STIFFNESS_MARGIN = 2.0  # [-] densityStep: the sleeper's contacts may stiffen this much as grains crush
@@ -53,9 +54,10 @@ class Recorder:
         self.samples, self.cycles = [], []
         self.start = None                    # index in samples of the current cycle's first row
         self.cpu = None                      # process CPU [s] at the current cycle's start (not saved: per process)
+        self.jumped = 0                      # cycles advanced by cycle jumping, not simulated (docs/cycles.md)
 
     def state(self):
-        return {k: getattr(self, k) for k in ('sleeper', 'z0', 't0', 'period', 'samples', 'cycles', 'start')}
+        return {k: getattr(self, k) for k in ('sleeper', 'z0', 't0', 'period', 'samples', 'cycles', 'start', 'jumped')}
 
     @classmethod
     def fromState(cls, s, ref=None):
@@ -84,7 +86,13 @@ class Recorder:
 
     def cycle(self):
         """Whole cycles since cycling began (a sample at a cycle's end belongs to the cycle it ends)."""
-        return int(math.floor((O.time - self.t0) / self.period + 1e-6))
+        return int(math.floor((O.time - self.t0) / self.period + 1e-6)) + self.jumped
+
+    def jump(self, cycles):
+        """`cycles` more cycles counted as done without being simulated: the current cycle's rows move with them."""
+        self.jumped += cycles
+        for row in self.samples[self.start:]:
+            row[1] += cycles
 
     def sample(self):
         """A row of samples.csv; returns the cycle it closed, or 0."""
@@ -127,13 +135,13 @@ class BoxTest(Experiment):
     REOPEN_PARAMS = ('results', 'runId', 'progress', 'vtk', 'cycles', 'saveEvery', 'continueFrom')
 
     def __init__(self, parameters=None, **params):
-        self.rig = self.recorder = None
+        self.rig = self.recorder = self.jumper = None
         self.bedTop = self.porosity = self.bedFile = None
         self.nEscaped, self.nCrib, self.initial, self.gradings, self.frames = 0, 0, None, [], []
         Experiment.__init__(self, parameters, **params)
 
     def pieces(self):
-        return Experiment.pieces(self) + [self.rig, self.recorder]
+        return Experiment.pieces(self) + [self.rig, self.recorder, self.jumper]
 
     # ------------------------------------------------------------------ the experiment
     def prepare(self):
@@ -198,6 +206,10 @@ class BoxTest(Experiment):
                                                   virtLast=rec.t0, initRun=True, label=RECORDER)]
         if p['saveEvery'] > 0:   # first in the chain: a state saved before the step begins resumes exactly
             O.engines = [runtime.callback(self, 'checkpoint', iterPeriod=1, dead=True, label=SAVER)] + list(O.engines)
+        self.jumper = CycleJumper.of(p)
+        if self.jumper is not None:   # first in the chain too: the states around a jump resume exactly
+            O.engines = [runtime.callback(self, 'jumpNow', iterPeriod=1, dead=True, label=JUMPER)] + list(O.engines)
+            self.adopt()
         plot.reset()
         plot.plots = {'settlement': ('F',)}   # YADE's live plot: the load against the settlement
         if p['densityStep'] > 0:
@@ -229,12 +241,36 @@ class BoxTest(Experiment):
                 self.grade(k)
             if self.p['saveEvery'] and k % self.p['saveEvery'] == 0:
                 chain.engine(SAVER).dead = False   # wakes at the start of the next step
+            if self.jumper is not None:
+                self.cycleEnded(k)
 
     def checkpoint(self):
         """The saver's call (saveEvery), at the start of the step after a cycle closed: a state to reopen a long
         run from, exactly where it was."""
         chain.engine(SAVER).dead = True
         self.save(os.path.join(self.out, 'state-cycle%07d.yade.gz' % self.cyclesDone()))
+
+    def cycleEnded(self, k):
+        """Cycle jumping: the jumper reads the cycle k just closed; a jump it plans is made at the next step."""
+        row = dict(zip(Recorder.CYCLE_COLUMNS, self.recorder.cycles[-1]))
+        crush = chain.engine('crush')
+        ids = [b.id for b in grains.spheres()]
+        if self.jumper.cycleEnded(crush, ids, k, row['settlement'], row['crushes'] + row['abrasions'] > 0):
+            chain.engine(JUMPER).dead = False
+
+    def jumpNow(self):
+        """The jumper's call at the start of the step after a cycle closed: the state before, the jump, the state
+        after (state-jump<K>-before/after.yade.gz), jumps.csv."""
+        chain.engine(JUMPER).dead = True
+        k = len(self.jumper.jumps) + 1
+        before, after = 'state-jump%04d-before.yade.gz' % k, 'state-jump%04d-after.yade.gz' % k
+        self.save(os.path.join(self.out, before))
+        e = self.jumper.apply(chain.engine('crush'), before, after)
+        self.recorder.jump(e['cycles'])
+        self.save(os.path.join(self.out, after))
+        outputs.writeJumps(self)
+        self.say('jump %d: cycles %d -> %d (bound: %s), largest damage rate %.3g a cycle, settlement %+.4f mm '
+                 'extrapolated' % (k, e['cycle'], e['to'], e['limit'], e['maxRate'], 1e3 * e['settlementJumped']))
 
     def grade(self, k):
         """The grading (and with vtk a frame) after cycle k, once."""
@@ -244,7 +280,8 @@ class BoxTest(Experiment):
                 outputs.writeFrame(self, k)
 
     def cyclesDone(self):
-        return len(self.recorder.cycles) if self.recorder is not None else 0
+        """Cycles done: those simulated (a row each) and those jumped over."""
+        return len(self.recorder.cycles) + self.recorder.jumped if self.recorder is not None else 0
 
     def load(self, cycles=None):
         """Run `cycles` more load cycles (default the parameter's), then write every output and save the
@@ -261,7 +298,9 @@ class BoxTest(Experiment):
             self.say('run %s goes on from %s -> %s' % (self.runId, self.dir.previous, self.out))
         rec = self.recorder
         target = self.cyclesDone() + n
-        tEnd = rec.t0 + target * rec.period
+        tEnd = rec.t0 + (target - rec.jumped) * rec.period
+        if self.jumper is not None:
+            self.jumper.target = target
         self.say('load: %d cycle(s) of %s, %.4g-%.4g N, %.3g s each, dt = %.3g s (%.3g steps a cycle)' % (
             n, p.history().source, p.history().seat, p.history().peak, rec.period, O.dt, rec.period / O.dt))
 
@@ -303,6 +342,7 @@ class BoxTest(Experiment):
     # ------------------------------------------------------------------ saving
     def state(self):
         return dict(self.baseState(), rig=runtime.ref(self.rig), recorder=runtime.ref(self.recorder),
+                    jumper=runtime.ref(self.jumper) if self.jumper is not None else None,
                     bedTop=self.bedTop, porosity=self.porosity, nEscaped=self.nEscaped, nCrib=self.nCrib,
                     bedFile=self.bedFile,
                     initial=self.initial,
@@ -313,6 +353,7 @@ class BoxTest(Experiment):
         exp = cls.__new__(cls)
         exp.setBaseState(s, ref)
         exp.rig, exp.recorder = ref(s['rig']), ref(s['recorder'])
+        exp.jumper = ref(s['jumper']) if s.get('jumper') is not None else None   # none before cycle jumping existed
         for k in ('bedTop', 'porosity', 'nEscaped', 'bedFile', 'initial', 'gradings', 'frames'):
             setattr(exp, k, s[k])
         exp.nCrib = s.get('nCrib', 0)   # states saved before crib ballast existed have none

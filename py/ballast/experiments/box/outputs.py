@@ -1,7 +1,12 @@
 """What the box test writes (docs/box.md, "Outputs"), in <results>/<run id>/:
 
 * cycles.csv     a row per cycle: permanent settlement at its end [m], largest settlement in it, resilient
-                 deflection, work of the load over it [J], crushes, abrasions, the largest fatigue damage
+                 deflection, work of the load over it [J], crushes, abrasions, the largest fatigue damage; with
+                 jump, a row per simulated cycle, with the cycles jumped before it and the settlement extrapolated
+                 over them [m] (settlementJumped: the total is settlement + settlementJumped)
+* jumps.csv      with jump: every jump (cycle, cycles jumped, what bounded it, the largest damage rate, the
+                 settlement law a + b ln N fitted to the simulated cycles and the settlement it extrapolated,
+                 the states saved before and after)
 * samples.csv    `samples` rows a cycle, appended as they are taken: applied load and the grains' force on the
                  sleeper [N], settlement [m], tilt [rad], crushes and abrasions so far (a run that goes on
                  from a state: from there)
@@ -26,6 +31,7 @@ from ... import grading as gr
 from ...engines import BallastAbrasionEngine, BallastCrushEngine
 from ...study.files import saveFigure, writeAtomic
 from .. import grains
+from ..cyclejump import LOG_COLUMNS
 from ..oedometer.outputs import _array, _unstructured, writeContactsVtu, writePvd
 from . import zones
 
@@ -68,9 +74,26 @@ def crushes(exp):
     return df
 
 
+def cycleTable(exp):
+    """cycles.csv as a DataFrame; with cycle jumping, the cycles jumped before each row and the settlement
+    extrapolated over them."""
+    rec, j = exp.recorder, exp.jumper
+    cyc = pd.DataFrame(rec.cycles, columns=rec.CYCLE_COLUMNS)
+    if j is not None:
+        total = dict((int(c), s) for c, s in j.direct)
+        cyc['jumped'] = cyc.cycle.astype(int) - np.arange(1, len(cyc) + 1)
+        cyc['settlementJumped'] = [total.get(int(c), s) - s for c, s in zip(cyc.cycle, cyc.settlement)]
+    return cyc
+
+
+def writeJumps(exp):
+    writeAtomic(os.path.join(exp.out, 'jumps.csv'),
+                pd.DataFrame(exp.jumper.jumps, columns=LOG_COLUMNS).to_csv(index=False, float_format='%.9g'))
+
+
 def summary(exp):
     p, rec = exp.p, exp.recorder
-    cyc = pd.DataFrame(rec.cycles, columns=rec.CYCLE_COLUMNS)
+    cyc = cycleTable(exp)
     c = crushes(exp)
     first = exp.initial['nGrainsInitial']
     original = len(set(exp.initial['ids']) & {int(i) for i in c.id})   # grains of the bed at the start that crushed
@@ -98,7 +121,18 @@ def summary(exp):
         'gradings': [{k: g[k] for k in ('cycle', 'Bg', 'Br', 'BBI')} for g in exp.gradings],
         'dt': O.dt, 'steps': O.iter, 'wallSeconds': wall, 'cpuSeconds': cpu,
         'cpuSecondsPerCycle': float(np.nanmedian(cyc.cpuSeconds)) if n and cyc.cpuSeconds.notna().any() else math.nan,
-        'stepsPerCycle': rec.period / O.dt}
+        'stepsPerCycle': rec.period / O.dt, **jumpSummary(exp, cyc)}
+
+
+def jumpSummary(exp, cyc):
+    """With cycle jumping: the cycles reached, simulated and jumped, the jumps, the extrapolated settlement."""
+    j = exp.jumper
+    if j is None:
+        return {}
+    s = float(cyc.settlement.iloc[-1]) if len(cyc) else 0.0
+    return {'cycles': int(cyc.cycle.iloc[-1]) if len(cyc) else 0, 'cyclesSimulated': len(cyc),
+            'cyclesJumped': int(exp.recorder.jumped), 'jumps': len(j.jumps), 'settlementJumped': j.extrapolated,
+            'settlementTotal': s + j.extrapolated}
 
 
 def appendSample(exp, row):
@@ -112,16 +146,14 @@ def appendSample(exp, row):
 
 
 def writeCycles(exp):
-    rec = exp.recorder
-    writeAtomic(os.path.join(exp.out, 'cycles.csv'),
-                pd.DataFrame(rec.cycles, columns=rec.CYCLE_COLUMNS).to_csv(index=False, float_format='%.9g'))
+    writeAtomic(os.path.join(exp.out, 'cycles.csv'), cycleTable(exp).to_csv(index=False, float_format='%.9g'))
 
 
 def write(exp):
     """Every output file; returns the summary."""
     rec, out = exp.recorder, exp.out
     s = summary(exp)
-    files = {'cycles.csv': pd.DataFrame(rec.cycles, columns=rec.CYCLE_COLUMNS), 'crushes.csv': crushes(exp)}
+    files = {'cycles.csv': cycleTable(exp), 'crushes.csv': crushes(exp)}
     g = pd.DataFrame([dict({'cycle': x['cycle'], 'Bg': x['Bg'], 'Br': x['Br'], 'BBI': x['BBI']},
                            **{'P%g' % a: v for a, v in zip(gr.SIEVES_MM, x['passing'])}) for x in exp.gradings])
     files['grading.csv'] = g
@@ -147,6 +179,9 @@ def figures(exp, files):
     if len(cyc):
         ax.semilogx(cyc.cycle, 1e3 * cyc.settlement, 'o-', ms=3, label='permanent settlement (at the seating load)')
         ax.semilogx(cyc.cycle, 1e3 * cyc.resilient, 's--', ms=3, label='resilient deflection')
+        if 'settlementJumped' in cyc and cyc.settlementJumped.any():
+            ax.semilogx(cyc.cycle, 1e3 * (cyc.settlement + cyc.settlementJumped), 'x:', ms=3,
+                        label='with the jumped cycles\' settlement extrapolated (a + b ln N)')
     ax.set_xlabel('load cycles N')
     ax.set_ylabel('sleeper displacement [mm]')
     ax.set_title('Box test: %.3g-%.3g kN, %s' % (p.history().seat / 1e3, p.history().peak / 1e3, exp.runId), fontsize=9)

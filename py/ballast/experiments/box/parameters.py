@@ -8,8 +8,8 @@ import json
 import math
 import os
 
-from ...params import (INT32_MAX, NUMBER_NONNEGATIVE, NUMBER_POSITIVE, Param, Parameters, anyText, between, boolean,
-                       checkDensityStep, flag, intBetween, nonNegative, positive, positiveInt, text)
+from ...params import (CYCLE_JUMP, INT32_MAX, NUMBER_NONNEGATIVE, NUMBER_POSITIVE, Param, Parameters, anyText, between,
+                       boolean, checkCycleJump, checkDensityStep, flag, intBetween, nonNegative, positive, positiveInt, text)
 from ..oedometer.parameters import PARAMS as OEDOMETER, checkRolling
 from .loadhistory import LoadHistory, LoadHistoryError
 
@@ -79,7 +79,7 @@ PARAMS = dict({
     'prepYoung', 'prepDamping', 'depFriction', 'damping', 'dtSafety', 'timeStep', 'densityStep',
     'crush', 'ft0', 'm', 'pattern', 'rMin', 'criterion', 'weibullModulus', 'keep', 'growTime', 'maxPerCheck', 'fatigue',
     'fatigueExponent', 'fatigueEndurance', 'fatigueHysteresis', 'Tc', 'abrasion', 'strength', 'gamma',
-    'abrasionPeriod', 'lostAsFines', 'results', 'runId', 'progress')})
+    'abrasionPeriod', 'lostAsFines', 'results', 'runId', 'progress')}, **CYCLE_JUMP)
 
 
 # What decides a bed: these parameters and the version of its preparation (bump it whenever bed.build changes:
@@ -169,7 +169,8 @@ class BoxParameters(Parameters):
         if T / dt < MIN_STEPS_PER_CYCLE:
             bad('f' if not p['loadFile'] else 'loadFile', 'a cycle of %.3g s spans %.3g time steps of %.3g s, fewer than '
                 '%d' % (T, T / dt, dt, MIN_STEPS_PER_CYCLE))
-        if p['cycles'] * T / dt > MAX_STEPS:
+        checkCycleJump(bad, p)
+        if p['cycles'] * T / dt > MAX_STEPS and not p['jump']:   # jumping: the cycles simulated are not known
             bad('cycles', '%d cycles of %.3g s take %.3g time steps of %.3g s, more than %.0e' % (
                 p['cycles'], T, p['cycles'] * T / dt, dt, MAX_STEPS))
         if p['Tc'] > T:

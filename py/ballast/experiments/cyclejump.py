@@ -1,0 +1,127 @@
+"""Cycle jumping for any cyclic experiment (docs/cycles.md): at the end of each simulated load cycle the
+experiment reports the cycle; over the last `window` simulated cycles without a crush or an abrasion the
+jumper measures each grain's fatigue damage rate, and where the C++ core (pkg/CycleJump.hpp) allows a jump
+of DN cycles every grain's damage is advanced by DN rates at once. Crushes are never extrapolated: the jump
+ends before the cycle the first grain would fail in. The grains do not move during a jump, so its permanent
+settlement is extrapolated from the law s = a + b ln N fitted to the simulated cycles, and reported apart.
+
+The experiment owns the cycle count and the states: it calls :meth:`CycleJumper.cycleEnded` at each simulated
+cycle's end, and when that returns a plan, :meth:`CycleJumper.apply` at the start of the next step (where a
+saved state resumes exactly), saving the states before and after."""
+import base64
+
+import numpy as np
+
+from .. import _ballast, runtime
+from ..settlementlaws import fitLaws
+
+LOG_COLUMNS = ('jump', 'cycle', 'cycles', 'to', 'limit', 'grain', 'maxRate', 'maxDamage', 'settlementLawA',
+               'settlementLawB', 'settlementLawR2', 'settlementJumped', 'stateBefore', 'stateAfter')
+
+
+def _pack(a):
+    return None if a is None else {'shape': list(a.shape), 'data': base64.b64encode(
+        np.ascontiguousarray(a, dtype=float).tobytes()).decode('ascii')}
+
+
+def _unpack(s):
+    return None if s is None else np.frombuffer(base64.b64decode(s['data']), dtype=float).reshape(s['shape']).copy()
+
+
+@runtime.persistent('CycleJumper')
+class CycleJumper:
+    """The damage rates of the last simulated cycles, the jumps made and the settlement they extrapolated.
+    window [cycles], steady [-], maxDamage [-], margin [cycles]: the parameters jumpWindow, jumpSteady,
+    jumpMaxDamage, jumpMargin (ballast.params.CYCLE_JUMP, checked by the experiment)."""
+
+    def __init__(self, window=10, steady=0.2, maxDamage=0.05, margin=1):
+        self.window, self.steady, self.maxDamage, self.margin = int(window), steady, maxDamage, int(margin)
+        self.target = None        # the cycle the run ends at (no jump goes past it)
+        self.ids = []             # the grains of the window (body ids)
+        self.last = None          # (2, n): their damage D and damaging peaks at the last cycle's end (after a jump)
+        self.increments = []      # per simulated cycle of the window: (3, n) increments of D and peaks, the largest peak
+        self.direct = []          # [cycle, settlement (with the jumps' extrapolation) [m]] of every simulated cycle
+        self.jumps = []           # one dict per jump (LOG_COLUMNS)
+        self.jumped = 0           # cycles not simulated [cycles]
+        self.extrapolated = 0.0   # settlement of the jumped cycles [m]
+        self.pending = None       # the plan of the jump to make at the next step
+
+    @classmethod
+    def of(cls, p):
+        """The jumper of the parameters p, None without jump."""
+        return cls(p['jumpWindow'], p['jumpSteady'], p['jumpMaxDamage'], p['jumpMargin']) if p['jump'] else None
+
+    def cycleEnded(self, engine, ids, cycle, settlement, changed):
+        """A simulated cycle `cycle` (numbered with the jumped ones) ended with the simulated permanent settlement
+        [m]; changed: a grain crushed or abraded in it. engine: the BallastCrushEngine with fatigue; ids: the
+        grains. Returns the plan of a jump (also kept as pending) or None."""
+        self.direct.append([int(cycle), float(settlement) + self.extrapolated])
+        ids = [int(i) for i in ids]
+        F = engine.fatigueState(ids)
+        now = np.vstack([F[:, 0], F[:, 3]])
+        peaks = engine.takeFatiguePeaks(ids)
+        if changed or ids != self.ids or self.last is None:   # a new network: measure afresh
+            self.ids, self.last, self.increments = ids, now, []
+            return None
+        self.increments = (self.increments + [np.vstack([now - self.last, peaks[None, :]])])[-self.window:]
+        self.last = now
+        # the last cycle of a run is simulated: its end state is a real one
+        remaining = (self.target - cycle - 1) if self.target is not None else 0
+        if len(self.increments) < self.window or remaining < 1:
+            return None
+        inc = np.array(self.increments)                       # (window, 3, n)
+        damage = now[0] - np.concatenate([np.cumsum(inc[::-1, 0], axis=0)[::-1], np.zeros((1, len(ids)))])
+        damage = np.maximum(damage, 0.0)                      # rounding of the sums must not make it negative
+        cycles, limit, grain, maxRate, rate = _ballast.cycleJumpPlan(
+            damage, np.max(inc[:, 2], axis=0), remaining, self.window, self.steady, self.maxDamage, self.margin)
+        if cycles < 1:
+            return None
+        self.pending = {'cycle': int(cycle), 'cycles': int(cycles), 'limit': limit,
+                        'grain': int(ids[grain]) if grain >= 0 else -1, 'maxRate': float(maxRate),
+                        'rate': rate, 'peakRate': np.mean(inc[:, 1], axis=0)}
+        return self.pending
+
+    def apply(self, engine, before='', after=''):
+        """The pending jump: every grain of the window takes DN rates of damage and of damaging peaks, the cycles
+        are counted as jumped, the settlement law of the simulated cycles gives their settlement. before, after:
+        the states saved around it (names for the log). Returns the log entry."""
+        plan, self.pending = self.pending, None
+        n, ids = plan['cycles'], self.ids
+        dD, dP = n * plan['rate'], np.round(n * plan['peakRate'])
+        engine.advanceFatigue(ids, dD, dP)
+        self.last = self.last + np.vstack([dD, dP])
+        N0 = plan['cycle']
+        law = fitLaws(*zip(*self.direct))['log'] if len(self.direct) >= 3 else None
+        ds = law['b'] * np.log((N0 + n) / N0) if law else 0.0
+        self.extrapolated += float(ds)
+        self.jumped += n
+        entry = {'jump': len(self.jumps) + 1, 'cycle': N0, 'cycles': n, 'to': N0 + n, 'limit': plan['limit'],
+                 'grain': plan['grain'], 'maxRate': plan['maxRate'],
+                 'maxDamage': float(np.max(engine.fatigueState(ids)[:, 0])) if ids else 0.0,
+                 'settlementLawA': law['a'] if law else None, 'settlementLawB': law['b'] if law else None,
+                 'settlementLawR2': law['r2'] if law else None, 'settlementJumped': float(ds),
+                 'stateBefore': before, 'stateAfter': after}
+        self.jumps.append(entry)
+        return entry
+
+    # ------------------------------------------------------------------ saving
+    def state(self):
+        s = {k: getattr(self, k) for k in ('window', 'steady', 'maxDamage', 'margin', 'target', 'ids', 'direct',
+                                           'jumps', 'jumped', 'extrapolated')}
+        s['last'] = _pack(self.last)
+        s['increments'] = [_pack(a) for a in self.increments]
+        s['pending'] = None if self.pending is None else dict(
+            self.pending, rate=_pack(self.pending['rate']), peakRate=_pack(self.pending['peakRate']))
+        return s
+
+    @classmethod
+    def fromState(cls, s, ref=None):
+        j = cls(s['window'], s['steady'], s['maxDamage'], s['margin'])
+        for k in ('target', 'ids', 'direct', 'jumps', 'jumped', 'extrapolated'):
+            setattr(j, k, s[k])
+        j.last = _unpack(s['last'])
+        j.increments = [_unpack(a) for a in s['increments']]
+        if s['pending'] is not None:
+            j.pending = dict(s['pending'], rate=_unpack(s['pending']['rate']),
+                             peakRate=_unpack(s['pending']['peakRate']))
+        return j

@@ -1,0 +1,27 @@
+"""The laws permanent settlement follows against the number of load cycles N in box tests, fitted by least
+squares: logarithmic s = a + b ln N and power s = c N^d (both pass through N = 1 with a's and c's share). Used
+by the analyses of cyclic studies (ballast.analysis.settlement) and by cycle jumping, which extrapolates the
+settlement of the cycles it does not simulate (docs/cycles.md). NumPy, no YADE."""
+import math
+
+import numpy as np
+
+
+def fitLaws(N, s):
+    """Least-squares fits of s = a + b ln N and of s = c N^d (a straight line in log-log, s > 0) to the cycles
+    N (>= 1) and settlements s [m]: {'log': {a, b, r2}, 'power': {c, d, r2}} (R^2 of each on s itself)."""
+    N, s = np.asarray(N, float), np.asarray(s, float)
+    if len(N) < 3 or np.any(N < 1):
+        raise ValueError('fitLaws: at least 3 cycles N >= 1 are needed, got %d (smallest %r)' % (len(N), N.min()))
+    x = np.log(N)
+    b, a = np.polyfit(x, s, 1)
+    out = {'log': {'a': float(a), 'b': float(b), 'r2': r2(s, a + b * x)}}
+    if np.all(s > 0):
+        d, lnc = np.polyfit(x, np.log(s), 1)
+        out['power'] = {'c': float(math.exp(lnc)), 'd': float(d), 'r2': r2(s, math.exp(lnc) * N ** d)}
+    return out
+
+
+def r2(y, fitted):
+    ss = float(np.sum((y - np.mean(y)) ** 2))
+    return 1.0 - float(np.sum((y - fitted) ** 2)) / ss if ss > 0 else 1.0

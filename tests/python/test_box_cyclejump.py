@@ -1,0 +1,96 @@
+"""Cycle jumping in the box test (docs/cycles.md), on the small box of test_box_experiment.py made weak enough for
+fatigue damage to grow every cycle without a crush (ft0 8e4 Pa m, fatigueExponent 10): the jumps and their
+records, the cycle count with the jumped cycles, each jump's damage within its bound, the states around a jump
+reopen and go on, and a run whose jumps are never allowed is the run without jumping, bit for bit."""
+import os
+
+import numpy as np
+import pandas as pd
+import pytest
+
+pytest.importorskip('yade')
+from ballast.experiments.box import BoxTest  # noqa: E402
+from ballast.params import ParamError  # noqa: E402
+from test_box_experiment import SMALL  # noqa: E402
+
+WEAK = dict(SMALL, ft0=8e4, fatigue=True, fatigueExponent=10, cycles=14, progress=600)
+JUMP = dict(jump=True, jumpWindow=3, jumpSteady=1.0, jumpMaxDamage=0.3, jumpMargin=0)
+
+
+@pytest.fixture(scope='module')
+def beds(tmp_path_factory):
+    return str(tmp_path_factory.mktemp('beds'))
+
+
+@pytest.fixture(scope='module')
+def jumped(tmp_path_factory, beds):
+    test = BoxTest(results=str(tmp_path_factory.mktemp('jump')), runId='jump', bedDir=beds, **WEAK, **JUMP)
+    return test, test.run()
+
+
+def test_a_jumped_run_reaches_its_cycles_and_records_every_jump(jumped):
+    test, s = jumped
+    cyc = pd.read_csv(os.path.join(test.out, 'cycles.csv'))
+    jumps = pd.read_csv(os.path.join(test.out, 'jumps.csv'))
+    assert s['cycles'] == 14 and cyc.cycle.iloc[-1] == 14 and s['jumps'] == len(jumps) >= 1
+    assert s['cyclesSimulated'] == len(cyc) and s['cyclesSimulated'] + s['cyclesJumped'] == 14
+    # each row's number is its rank among the simulated cycles plus the cycles jumped before it
+    assert np.array_equal(cyc.cycle, np.arange(1, len(cyc) + 1) + cyc.jumped)
+    assert jumps.cycles.sum() == s['cyclesJumped'] and np.all(jumps.to == jumps.cycle + jumps.cycles)
+    # the first WINDOW + 1 cycles are simulated, the last one too
+    assert list(cyc.cycle[:4]) == [1, 2, 3, 4] and cyc.jumped.iloc[-1] == s['cyclesJumped']
+    assert s['settlementTotal'] == pytest.approx(s['settlement'] + jumps.settlementJumped.sum(), rel=1e-12)
+    assert s['settlementJumped'] == pytest.approx(cyc.settlementJumped.iloc[-1], rel=1e-9, abs=1e-15)
+    for name in list(jumps.stateBefore) + list(jumps.stateAfter):
+        assert os.path.isfile(os.path.join(test.out, name))
+
+
+def test_a_jump_moves_every_grains_damage_within_its_bound_and_nothing_else(jumped):
+    from yade import O
+    from ballast.experiments import chain, grains
+    test, _ = jumped
+    jumps = pd.read_csv(os.path.join(test.out, 'jumps.csv'))
+    e = jumps.iloc[0]
+    states = {}
+    for k in ('stateBefore', 'stateAfter'):
+        run = BoxTest.reopen(os.path.join(test.out, e[k]), readOnly=True)
+        ids = [b.id for b in grains.spheres()]
+        states[k] = (np.array([list(O.bodies[i].state.pos) for i in ids]), run.recorder.jumped, O.iter,
+                     chain.engine('crush').fatigueState(ids)[:, 0])
+    (x0, j0, i0, D0), (x1, j1, i1, D1) = states['stateBefore'], states['stateAfter']
+    assert np.array_equal(x0, x1) and i0 == i1                  # no grain moves, no step is taken
+    assert j1 - j0 == e.cycles
+    grow = D1 - D0
+    assert np.all(grow >= 0) and grow.max() <= JUMP['jumpMaxDamage'] + 1e-12 and grow.max() > 0
+    assert D1.max() == pytest.approx(e.maxDamage, rel=1e-8)   # jumps.csv keeps 9 digits
+
+
+def test_the_state_after_a_jump_reopens_and_goes_on(jumped, tmp_path):
+    test, _ = jumped
+    jumps = pd.read_csv(os.path.join(test.out, 'jumps.csv'))
+    e = jumps.iloc[-1]
+    run = BoxTest.reopen(os.path.join(test.out, e.stateAfter), results=str(tmp_path), runId='after')
+    s = run.load(2)
+    cyc = pd.read_csv(os.path.join(run.out, 'cycles.csv'))
+    assert s['cycles'] == cyc.cycle.iloc[-1] and cyc.cycle.iloc[-1] >= e.to + 2
+    assert cyc.jumped.iloc[-1] >= jumps.cycles.sum() - 0   # the jumps so far are counted in the reopened run
+
+
+def test_a_run_whose_jumps_are_never_allowed_is_the_run_without_jumping(tmp_path, beds):
+    """jumpMaxDamage 1e-12: every damaged grain allows no jump (its rate is far above 1e-12 a cycle)."""
+    cols = ['cycle', 't', 'settlement', 'settlementPeak', 'resilient', 'work', 'crushes', 'abrasions', 'nCrushed',
+            'nAbraded', 'maxDamage', 'maxStressRatio', 'nGrains', 'tilt']
+    out = {}
+    for name, extra in (('off', {}), ('never', dict(JUMP, jumpMaxDamage=1e-12))):
+        test = BoxTest(results=str(tmp_path), runId=name, bedDir=beds, **dict(WEAK, cycles=6), **extra)
+        s = test.run()
+        out[name] = pd.read_csv(os.path.join(test.out, 'cycles.csv'))[cols]
+        if name == 'never':
+            assert s['jumps'] == 0 and s['cyclesJumped'] == 0
+    assert out['off'].maxDamage.iloc[-1] > 0
+    pd.testing.assert_frame_equal(out['off'], out['never'], check_exact=True)
+
+
+def test_jumping_needs_fatigue():
+    with pytest.raises(ParamError, match='jump = True is not allowed: cycle jumping advances fatigue damage'):
+        BoxTest(**dict(SMALL, jump=True))

@@ -1,0 +1,95 @@
+"""ballast.experiments.cyclejump in YADE: a grain at a constant peak stress ratio (the fatigue test of the engines,
+tests/python/test_engines_fatigue.py: it crushes in cycle 61 worked out by hand) crushes in the same cycle with and
+without jumping, whatever the window and margin; the jump ends before that cycle; the jumper's state comes back
+whole; a crush restarts the window. Cycles are driven here by hand, as an experiment drives them."""
+import math
+
+import numpy as np
+import pytest
+from yade import O
+
+from ballast.experiments.cyclejump import CycleJumper
+from test_engines_fatigue import PER_CYCLE, fatigueGrain
+
+CRUSH_CYCLE = 61   # s_p = 0.6, b = 8: N_f = 0.6^-8 = 59.5 peaks, crushes in cycle 61 (test_engines_fatigue.py)
+
+
+def crushCycle(monkeypatch, jumper, maxCycles=200):
+    """Runs load cycles of PER_CYCLE steps, the jumper told at each cycle's end; returns (the cycle the grain
+    crushed in, counting the jumped ones, the jumper)."""
+    g, crush = fatigueGrain(monkeypatch)
+    cycle = 0
+    if jumper is not None:
+        jumper.target = maxCycles
+    while cycle < maxCycles:
+        O.run(PER_CYCLE, True)
+        cycle += 1
+        if crush.nCrushed:
+            return cycle, jumper
+        if jumper is not None and jumper.cycleEnded(crush, [g], cycle, 1e-4 * math.log(cycle) + 1e-4, False):
+            entry = jumper.apply(crush)
+            assert entry['to'] < CRUSH_CYCLE - 1 - jumper.margin + 1   # never into the cycles before the failing one
+            cycle = entry['to']
+    return None, jumper
+
+
+def test_without_a_jumper_the_grain_crushes_in_cycle_61(monkeypatch):
+    assert crushCycle(monkeypatch, None)[0] == CRUSH_CYCLE
+
+
+@pytest.mark.parametrize('window,margin', [(2, 0), (4, 1), (6, 3)])
+def test_with_jumping_the_grain_crushes_in_the_same_cycle(monkeypatch, window, margin):
+    cycle, j = crushCycle(monkeypatch, CycleJumper(window=window, steady=0.2, maxDamage=0.99, margin=margin))
+    assert cycle == CRUSH_CYCLE
+    assert j.jumped > 30 and len(j.jumps) >= 1
+    # the first jump ends margin cycles before the last cycle the grain survives (59 peaks: 60 - 1 - margin)
+    assert j.jumps[0]['to'] == CRUSH_CYCLE - 2 - margin and j.jumps[0]['limit'] == 'failure'
+
+
+def test_small_jumps_add_up_to_the_same_damage(monkeypatch):
+    """maxDamage 0.02 limits each jump to floor(0.02 / r) = 2 cycles (r = 0.4 0.6^8 = 0.0067): many jumps, the
+    crush still in cycle 61 and each jump's damage within maxDamage."""
+    cycle, j = crushCycle(monkeypatch, CycleJumper(window=2, steady=0.2, maxDamage=0.02, margin=0))
+    assert cycle == CRUSH_CYCLE and len(j.jumps) > 5
+    r = 0.4 * 0.6 ** 8
+    assert all(e['cycles'] * r <= 0.02 for e in j.jumps) and all(e['limit'] == 'maxDamage' for e in j.jumps[:-1])
+
+
+def test_the_settlement_of_a_jump_comes_from_the_log_law_of_the_simulated_cycles(monkeypatch):
+    """The settlements reported here follow s = 1e-4 (1 + ln N) exactly: the law is found and a jump from N0
+    to N0 + DN extrapolates 1e-4 ln((N0 + DN) / N0)."""
+    _, j = crushCycle(monkeypatch, CycleJumper(window=2, steady=0.2, maxDamage=0.99, margin=0))
+    e = j.jumps[0]
+    assert e['settlementLawB'] == pytest.approx(1e-4, rel=1e-9) and e['settlementLawR2'] == pytest.approx(1, abs=1e-12)
+    assert e['settlementJumped'] == pytest.approx(1e-4 * math.log(e['to'] / e['cycle']), rel=1e-9)
+
+
+def test_the_jumpers_state_comes_back_whole(monkeypatch):
+    g, crush = fatigueGrain(monkeypatch)
+    j = CycleJumper(window=3, steady=0.2, maxDamage=0.99, margin=1)
+    j.target = 100
+    for cycle in range(1, 5):
+        O.run(PER_CYCLE, True)
+        plan = j.cycleEnded(crush, [g], cycle, 1e-4 * cycle, False)
+    assert plan is not None
+    back = CycleJumper.fromState(j.state())
+    for k in ('window', 'steady', 'maxDamage', 'margin', 'target', 'ids', 'direct', 'jumps', 'jumped', 'extrapolated'):
+        assert getattr(back, k) == getattr(j, k), k
+    np.testing.assert_array_equal(back.last, j.last)
+    assert all(np.array_equal(a, b) for a, b in zip(back.increments, j.increments))
+    assert back.pending['cycles'] == plan['cycles'] and np.array_equal(back.pending['rate'], plan['rate'])
+
+
+def test_a_crush_or_a_new_grain_restarts_the_window(monkeypatch):
+    g, crush = fatigueGrain(monkeypatch)
+    j = CycleJumper(window=2, steady=0.2, maxDamage=0.99, margin=0)
+    j.target = 100
+    for cycle in range(1, 3):
+        O.run(PER_CYCLE, True)
+        assert j.cycleEnded(crush, [g], cycle, 0.0, False) is None
+    O.run(PER_CYCLE, True)
+    assert j.cycleEnded(crush, [g], 3, 0.0, True) is None and j.increments == []   # a crush in cycle 3
+    O.run(PER_CYCLE, True)
+    assert j.cycleEnded(crush, [g], 4, 0.0, False) is None and len(j.increments) == 1
+    O.run(PER_CYCLE, True)
+    assert j.cycleEnded(crush, [g], 5, 0.0, False) is not None                     # two steady cycles again
