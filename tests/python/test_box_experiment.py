@@ -197,3 +197,15 @@ def test_the_command_line_refuses_a_bad_value(tmp_path):
     assert not os.listdir(str(tmp_path))   # refused before any work: nothing written
     helped = subprocess.run(['yade', '-n', '-x', script, '--help'], capture_output=True, text=True, timeout=300, env=env)
     assert '--loadFile' in helped.stdout and '--sleeperMass' in helped.stdout
+
+
+def test_a_sleeper_that_reaches_the_floor_stops_the_run(tmp_path):
+    """Grains this weak (ft0 3.5e4 Pa m with fatigue of exponent 10) crush away under the sleeper within a few
+    cycles; YADE has no contact between the sleeper (a box) and the floor (a wall), so the run must stop where
+    the sleeper's underside comes within dMin / 2 of the floor, not let it fall through (it fell 5 m before)."""
+    test = BoxTest(results=str(tmp_path), runId='floor', **dict(SMALL, cycles=30, fatigue=True, fatigueExponent=10))
+    s = test.run()
+    assert s['stoppedBy'] == 'sleeperOnFloor' and s['cycles'] < 30 and s['settlement'] < SMALL['bedDepth']
+    last = pd.read_csv(os.path.join(test.out, 'samples.csv')).settlement.iloc[-1]   # where it stopped, mid-cycle
+    top = test.initial['zBase']                                                      # the underside at the start
+    assert top - SMALL['dMin'] / 2 < last < top - SMALL['dMin'] / 2 + SMALL['dMin']  # on the floor, not below it

@@ -18,8 +18,8 @@ DECLARATION = Declaration(
     statistics=['settlement', 'nCrushed'], response=('settlement',),
     # whole: a run's per-cycle table, gradings, crushes and zones are tens of kB for 1 000 cycles; its end state
     # (0.4 MB for 400 grains) is what the next slice of a long run continues from (continueFrom), on any machine;
-    # samples.csv (100 rows a cycle) and the other states stay out
-    recordFiles=('summary.json', 'row.json', 'cycles.csv', 'grading.csv', 'crushes.csv', 'zones.csv',
+    # with cycle jumping its jumps.csv; samples.csv (100 rows a cycle) and the other states stay out
+    recordFiles=('summary.json', 'row.json', 'cycles.csv', 'grading.csv', 'crushes.csv', 'zones.csv', 'jumps.csv',
                  'state-end.yade.gz'),
     brief=lambda s: '%s cycles, settlement %.3f mm (resilient %.3f mm), %s crushed' % (
         s.get('cycles', '?'), 1e3 * s.get('settlement', float('nan')), 1e3 * s.get('resilient', float('nan')),

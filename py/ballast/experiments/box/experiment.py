@@ -138,6 +138,7 @@ class BoxTest(Experiment):
         self.rig = self.recorder = self.jumper = None
         self.bedTop = self.porosity = self.bedFile = None
         self.nEscaped, self.nCrib, self.initial, self.gradings, self.frames = 0, 0, None, [], []
+        self.onFloor = False   # the sleeper reached the box's floor: the run stops there
         Experiment.__init__(self, parameters, **params)
 
     def pieces(self):
@@ -233,6 +234,11 @@ class BoxTest(Experiment):
         10, 20, ...) the grading and a VTK frame."""
         k = self.recorder.sample()
         row = self.recorder.samples[-1]
+        if not self.onFloor and self.recorder.underside() < self.p['dMin'] / 2:
+            # YADE has no contact between a box and a wall: the sleeper would fall through the floor
+            self.onFloor = True
+            self.say('the sleeper reached the box\'s floor (settlement %.1f mm in cycle %d): the bed under it is gone; '
+                     'the run stops here' % (1e3 * row[4], row[1] + 1))
         outputs.appendSample(self, row)
         plot.addData(**dict(zip(('t', 'cycle', 'F', 'Fgrains', 'settlement'), row[:5])))
         if k:
@@ -304,7 +310,7 @@ class BoxTest(Experiment):
         self.say('load: %d cycle(s) of %s, %.4g-%.4g N, %.3g s each, dt = %.3g s (%.3g steps a cycle)' % (
             n, p.history().source, p.history().seat, p.history().peak, rec.period, O.dt, rec.period / O.dt))
 
-        self.runUntil(lambda: self.cyclesDone() >= target, tEnd=tEnd + 2 * rec.period / p['samples'], phase='load',
+        self.runUntil(lambda: self.cyclesDone() >= target or self.onFloor, tEnd=tEnd + 2 * rec.period / p['samples'], phase='load',
                       checkEvery=50, simSpan=tEnd - O.time, simStart=O.time,
                       extra=lambda: 'cycle %d of %d, settlement %.2f mm, %d crushed, %d abraded' % (
                           self.cyclesDone(), target, 1e3 * (rec.samples[-1][4] if rec.samples else 0),
@@ -344,7 +350,7 @@ class BoxTest(Experiment):
         return dict(self.baseState(), rig=runtime.ref(self.rig), recorder=runtime.ref(self.recorder),
                     jumper=runtime.ref(self.jumper) if self.jumper is not None else None,
                     bedTop=self.bedTop, porosity=self.porosity, nEscaped=self.nEscaped, nCrib=self.nCrib,
-                    bedFile=self.bedFile,
+                    bedFile=self.bedFile, onFloor=self.onFloor,
                     initial=self.initial,
                     gradings=self.gradings, frames=self.frames)
 
@@ -357,4 +363,5 @@ class BoxTest(Experiment):
         for k in ('bedTop', 'porosity', 'nEscaped', 'bedFile', 'initial', 'gradings', 'frames'):
             setattr(exp, k, s[k])
         exp.nCrib = s.get('nCrib', 0)   # states saved before crib ballast existed have none
+        exp.onFloor = s.get('onFloor', False)
         return exp

@@ -121,7 +121,8 @@ def summary(exp):
         'gradings': [{k: g[k] for k in ('cycle', 'Bg', 'Br', 'BBI')} for g in exp.gradings],
         'dt': O.dt, 'steps': O.iter, 'wallSeconds': wall, 'cpuSeconds': cpu,
         'cpuSecondsPerCycle': float(np.nanmedian(cyc.cpuSeconds)) if n and cyc.cpuSeconds.notna().any() else math.nan,
-        'stepsPerCycle': rec.period / O.dt, **jumpSummary(exp, cyc)}
+        'stepsPerCycle': rec.period / O.dt, **jumpSummary(exp, cyc),
+        **({'stoppedBy': 'sleeperOnFloor'} if exp.onFloor else {})}
 
 
 def jumpSummary(exp, cyc):
