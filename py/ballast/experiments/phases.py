@@ -41,7 +41,9 @@ class Phases:
     def run(self, phase, done=None, tEnd=None, simSpan=None, simStart=None, extra=None, checkEvery=200,
             afterChunk=None):
         """Run until O.time reaches tEnd [s] or done() is true, a progress line every progressSeconds.
-        simSpan: planned simulated duration [s] of the phase, from simStart (for % and time left)."""
+        tEnd may be a function giving the end [s] as it stands (cycle jumping moves it: fewer cycles are
+        simulated). simSpan: planned simulated duration [s] of the phase, from simStart (for % and time left)."""
+        end = tEnd if callable(tEnd) else (lambda: tEnd)
         w0, i0, t0 = time.time(), O.iter, O.time
         lastPrint = time.time()
         chunk = 500
@@ -50,10 +52,11 @@ class Phases:
             O.engines = O.engines + [runtime.callback(self, 'check', iterPeriod=checkEvery, label=self.LABEL)]
         try:
             while not self.finished:
-                if tEnd is not None and O.time >= tEnd - 0.5 * O.dt:
+                stop = end()
+                if stop is not None and O.time >= stop - 0.5 * O.dt:
                     break
                 tw = time.time()
-                n = chunk if tEnd is None else max(1, min(chunk, int(math.ceil((tEnd - O.time) / O.dt - 0.5))))
+                n = chunk if stop is None else max(1, min(chunk, int(math.ceil((stop - O.time) / O.dt - 0.5))))
                 O.run(n, True)
                 if n == chunk:
                     chunk = int(min(max(chunk * self.CHUNK_WALL / max(time.time() - tw, 1e-3), 100), 50000))

@@ -36,16 +36,17 @@ from ...geometry import sphereVolume
 from ...names import fmtTime
 from ...params import validate
 from ...study.files import writeAtomic
-from .. import grains
+from .. import chain, grains
 from .. import timestep
 from ..base import Experiment
+from ..cyclejump import CycleJumper
 from .loading import MODES
 from .outputs import Outputs
 from .packing import StoredPacking
 from .parameters import OWNER, PARAMS, OedometerParameters
 from .probe import Probe, counter, degradingEngines, engine
 
-SAVER, CONTAINMENT = 'oedoSaver', 'oedoContainment'
+SAVER, CONTAINMENT, JUMPER, JUMP_CYCLE = 'oedoSaver', 'oedoContainment', 'oedoJumper', 'oedoJumpCycle'
 PLATE_STIFFNESS_MARGIN = 2.0  # [-] densityStep: the plate's contacts may stiffen this much as grains crush under it
 
 
@@ -66,6 +67,7 @@ class Oedometer(Experiment):
         self.rig = self.initial = self.probe = None
         self.loading = load
         self.maxProtrusion, self.nEscaped = 0.0, 0
+        self.jumper = None           # cycle jumping (jump): experiments.cyclejump
         self.stoppedBy = None        # why the last load() ended: 'cycles', 'stopAt', 'quiet' or 'force'
         Experiment.__init__(self, parameters, **params)
         if self.loading is None:
@@ -85,7 +87,7 @@ class Oedometer(Experiment):
         return self.rig.cylinder if self.rig is not None else None
 
     def pieces(self):
-        return Experiment.pieces(self) + [self.packing, self.loading, self.outputs, self.rig]
+        return Experiment.pieces(self) + [self.packing, self.loading, self.outputs, self.rig, self.jumper]
 
     # ------------------------------------------------------------------ the experiment
     def checkOutputs(self):
@@ -114,20 +116,54 @@ class Oedometer(Experiment):
                 self.prepare()
             self.startLoading()
         t0 = self.loading.t0
-        done = math.floor((O.time - t0 + 0.5 * O.dt) / self.T)
+        done = math.floor((O.time - t0 + 0.5 * O.dt) / self.T) + self.cyclesJumped()
         total = done + cycles if cycles is not None else (p['cycles'] if done < p['cycles'] else done + 1)
-        tStart, tEnd = O.time, t0 + total * self.T
+        tStart, tEnd = O.time, t0 + (total - self.cyclesJumped()) * self.T
+        if self.jumper is not None:
+            self.jumper.target = total
         self.stoppedBy = 'cycles'
         if p['stopAt'] > 0 and done == 0:  # an early stop, a step past the crushing check after stopAt T
             stop = t0 + p['stopAt'] * self.T + 1.5 * (p['Tc'] or O.dt)
             if stop < tEnd:
                 tEnd, self.stoppedBy = stop, 'stopAt'
-        self.runUntil(self.stopCondition(), tEnd=tEnd, phase='load', simSpan=tEnd - tStart, simStart=tStart,
+        # each jump brings the end nearer by the cycles it jumped
+        end = tEnd if self.jumper is None or self.stoppedBy == 'stopAt' else (
+            lambda: t0 + (total - self.cyclesJumped()) * self.T)
+        self.runUntil(self.stopCondition(), tEnd=end, phase='load', simSpan=tEnd - tStart, simStart=tStart,
                       extra=lambda: 'cycle %d/%d  F=%.0f kN  delta=%.1f mm  crushed %d  abraded %d' % (
-                          min(math.floor((O.time - t0) / self.T) + 1, total), total,
+                          min(math.floor((O.time - t0) / self.T) + 1 + self.cyclesJumped(), total), total,
                           self.loading.force() / 1e3, self.loading.delta() * 1e3, self.counter('crush', 'nCrushed'),
                           self.counter('abrasion', 'nAbraded')) + self.outputs.inertialInfo())
         return self.finish()
+
+    def cyclesJumped(self):
+        """Cycles advanced by cycle jumping, not simulated (0 without jump)."""
+        return self.jumper.jumped if self.jumper is not None else 0
+
+    def cycleEnded(self):
+        """Cycle jumping, after outputs.cycleEnd at each cycle's end: the jumper reads the row just closed; a jump it
+        plans is made at the start of the next step (jumpNow)."""
+        rows = self.outputs.cycleRows
+        if not rows or (self.jumper.direct and self.jumper.direct[-1][0] >= rows[-1][0]):
+            return
+        k, settlement = rows[-1][0], rows[-1][2]
+        before = rows[-2][4:6] if len(rows) > 1 else (0, 0)
+        changed = rows[-1][4] != before[0] or rows[-1][5] != before[1]
+        ids = [b.id for b in grains.spheres()]
+        if self.jumper.cycleEnded(self.engine('crush'), ids, k, settlement, changed):
+            chain.engine(JUMPER).dead = False
+
+    def jumpNow(self):
+        """The state before, the jump, the state after (state-jump<K>-before/after.yade.gz), jumps.csv."""
+        chain.engine(JUMPER).dead = True
+        k = len(self.jumper.jumps) + 1
+        before, after = 'state-jump%04d-before.yade.gz' % k, 'state-jump%04d-after.yade.gz' % k
+        self.save(os.path.join(self.out, before))
+        e = self.jumper.apply(self.engine('crush'), before, after)
+        self.save(os.path.join(self.out, after))
+        self.outputs.writeJumps()
+        self.say('jump %d: cycles %d -> %d (bound: %s), largest damage rate %.3g a cycle, settlement %+.4f mm '
+                 'extrapolated' % (k, e['cycle'], e['to'], e['limit'], e['maxRate'], 1e3 * e['settlementJumped']))
 
     def stopCondition(self):
         """The load phase's end test (checked every 200 steps): the displacement load has reached Fmax, or
@@ -191,8 +227,13 @@ class Oedometer(Experiment):
         x, r, m = grains.arrays()
         self.initial = {'massInitial': float(np.sum(m)), 'nGrainsInitial': len(r),
                         'volumeGrains': float(np.sum(sphereVolume(r))), 'radii': r.tolist(), 'masses': m.tolist()}
-        self.probe = Probe(p, self.loading, self.rig, self.dir, self.initial)
+        self.jumper = CycleJumper.of(p)
+        self.probe = Probe(p, self.loading, self.rig, self.dir, self.initial, self.jumper)
         self.outputs.start(self.probe)
+        if self.jumper is not None:   # after outputs.cycleEnd; the jump first in the next step, where states resume exactly
+            O.engines = [runtime.callback(self, 'jumpNow', iterPeriod=1, dead=True, label=JUMPER)] + list(O.engines) + [
+                runtime.callback(self, 'cycleEnded', virtPeriod=self.T, virtLast=O.time, label=JUMP_CYCLE)]
+            self.adopt()
         # containment at simulated times (the recorder's period): the same in every identical run
         O.engines = O.engines + [runtime.callback(self, 'checkContainment', virtPeriod=self.T / p['samples'],
                                                   label=CONTAINMENT)]
@@ -267,7 +308,7 @@ class Oedometer(Experiment):
         half = min(p.peakTime(), a[-1, 0])  # eq. 8 peaks at T/2
         F5 = np.where(np.isfinite(a[:, 5]), a[:, 5], a[:, 1]) >= 0.05 * p['Fmax']
         before, after = self.grading()
-        cycles = float(a[-1, 0] / self.T)
+        cycles = float(a[-1, 0] / self.T) + self.cyclesJumped()
         s = {
             'runId': self.runId,
             'peakForce': float(a[k, 1]),  # = peakGrainForce (the name older records have)
@@ -327,6 +368,11 @@ class Oedometer(Experiment):
             'yade': getattr(getattr(__import__('yade'), 'config', None), 'version', ''),
             'params': dict(p),
         }
+        if self.jumper is not None:   # cycle jumping: what was simulated, jumped and extrapolated
+            rows = self.outputs.cycleRows
+            s.update({'cyclesSimulated': len(rows), 'cyclesJumped': self.jumper.jumped, 'jumps': len(self.jumper.jumps),
+                      'settlementJumped': self.jumper.extrapolated,
+                      'settlementTotal': (rows[-1][2] if rows else 0.0) + self.jumper.extrapolated})
         return s
 
     def _writeTiming(self):
@@ -343,7 +389,8 @@ class Oedometer(Experiment):
         """Everything the experiment needs to go on after O.load(): JSON-able."""
         return dict(self.baseState(), packing=runtime.ref(self.packing), loading=runtime.ref(self.loading),
                     outputs=runtime.ref(self.outputs), rig=runtime.ref(self.rig), initial=self.initial,
-                    maxProtrusion=self.maxProtrusion, nEscaped=self.nEscaped, stoppedBy=self.stoppedBy)
+                    maxProtrusion=self.maxProtrusion, nEscaped=self.nEscaped, stoppedBy=self.stoppedBy,
+                    jumper=runtime.ref(self.jumper))
 
     @classmethod
     def fromState(cls, s, ref):
@@ -352,6 +399,7 @@ class Oedometer(Experiment):
         exp.packing, exp.loading, exp.outputs, exp.rig = (ref(s[k]) for k in ('packing', 'loading', 'outputs', 'rig'))
         exp.initial, exp.maxProtrusion, exp.nEscaped = s['initial'], s['maxProtrusion'], s['nEscaped']
         exp.stoppedBy = s.get('stoppedBy')  # states saved before the stop conditions: unknown
+        exp.jumper = ref(s['jumper']) if s.get('jumper') is not None else None   # none before cycle jumping
         exp.probe = None
         return exp
 
@@ -361,7 +409,7 @@ class Oedometer(Experiment):
         self.loading.bind(self.p)
         self.resumeDensityScaling()
         if self.initial is not None:
-            self.probe = Probe(self.p, self.loading, self.rig, self.dir, self.initial)
+            self.probe = Probe(self.p, self.loading, self.rig, self.dir, self.initial, self.jumper)
             self.outputs.bind(self.probe)
 
     def reopened(self):

@@ -13,11 +13,13 @@ import math
 import os
 
 import numpy as np
+import pandas as pd
 from yade import O, plot
 from yade.wrapper import Facet, Sphere
 
 from ... import _ballast, grading, harvest, runtime
 from ...study.files import saveFigure, writeAtomic
+from ..cyclejump import LOG_COLUMNS
 
 FD_COLUMNS = ('t', 'F', 'delta', 'nCrushed', 'nAbraded', 'Fapplied')
 CHECK_COLUMNS = ('t', 'iter', 'nCrushed', 'maxStressRatio', 'maxCrushableRatio', 'inertialNumber')
@@ -175,22 +177,36 @@ class Outputs:
         largest fatigue damage D of a grain (0 without fatigue)."""
         exp = self.exp
         t = O.time - exp.loading.t0
-        k = int(round(t / exp.T))
-        if k < 1 or (self.cycleRows and self.cycleRows[-1][0] >= k):
+        simulated = int(round(t / exp.T))
+        if simulated < 1:
+            return
+        k = simulated + exp.cyclesJumped()   # the cycle's number counts the jumped ones
+        if self.cycleRows and self.cycleRows[-1][0] >= k:
             return
         a = np.array(self.rows)
         settlement = exp.loading.delta()
-        within = a[(a[:, 0] >= (k - 1) * exp.T) & (a[:, 0] <= t), 2]
+        within = a[(a[:, 0] >= (simulated - 1) * exp.T) & (a[:, 0] <= t), 2]
         deepest = max(float(np.max(within, initial=settlement)), settlement)
         crushed, abraded = exp.counter('crush', 'nCrushed'), exp.counter('abrasion', 'nAbraded')
         self.cycleRows.append((k, t, settlement, deepest - settlement, crushed, abraded, grading.marsal(*exp.grading()),
                                exp.counter('crush', 'maxDamage')))
-        lines = [','.join(CYCLE_COLUMNS) + '\n']
+        j = exp.jumper
+        total = dict((int(c), s) for c, s in j.direct) if j is not None else {}
+        total[k] = settlement + (j.extrapolated if j is not None else 0.0)   # the jumper reads this row after
+        lines = [','.join(CYCLE_COLUMNS + (('jumped', 'settlementJumped') if j is not None else ())) + '\n']
         for i, row in enumerate(self.cycleRows):
             prev = self.cycleRows[i - 1][4:6] if i else (0, 0)
-            lines.append('%d,%.9g,%.9g,%.9g,%d,%d,%.6g,%.6g\n' % (tuple(row[:4]) + (row[4] - prev[0], row[5] - prev[1],
-                                                                   row[6], row[7] if len(row) > 7 else 0.0)))
+            line = '%d,%.9g,%.9g,%.9g,%d,%d,%.6g,%.6g' % (tuple(row[:4]) + (row[4] - prev[0], row[5] - prev[1],
+                                                         row[6], row[7] if len(row) > 7 else 0.0))
+            if j is not None:   # with jumping: the cycles jumped before this row, the settlement extrapolated over them
+                line += ',%d,%.9g' % (row[0] - (i + 1), total.get(int(row[0]), row[2]) - row[2])
+            lines.append(line + '\n')
         writeAtomic(os.path.join(exp.out, 'cycles.csv'), ''.join(lines))
+
+    def writeJumps(self):
+        """jumps.csv: every jump of the cycle jumper (experiments.cyclejump.LOG_COLUMNS)."""
+        writeAtomic(os.path.join(self.exp.out, 'jumps.csv'), pd.DataFrame(
+            self.exp.jumper.jumps, columns=LOG_COLUMNS).to_csv(index=False, float_format='%.9g'))
 
     def logCheck(self):
         crush = self.exp.engine('crush')

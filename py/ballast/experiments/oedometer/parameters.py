@@ -12,9 +12,9 @@ import re
 
 from ... import _ballast
 from ...geometry import frictPhysStiffness
-from ...params import (ABRASION, CRUSH, DENSITY_STEP, INT32_MAX, NUMBER_NONNEGATIVE, NUMBER_POSITIVE, Param, ParamError,
+from ...params import (ABRASION, CRUSH, CYCLE_JUMP, DENSITY_STEP, INT32_MAX, NUMBER_NONNEGATIVE, NUMBER_POSITIVE, Param, ParamError,
                        Parameters, TIME_STEP, anyText, between, boolean, checkDensityStep, choice, flag, intAtLeast, intBetween,
-                       literal, nonNegative, positive, positiveInt, text)
+                       literal, nonNegative, positive, positiveInt, text, checkCycleJump)
 from .loadcurve import halfLoadTime, peakTime
 
 OWNER = 'Oedometer'
@@ -144,6 +144,7 @@ PARAMS = {
     'progress': Param(10.0, 's', 'wall-clock seconds between progress lines', positive, NUMBER_POSITIVE),
     'timing': Param(False, '-', 'time every engine while loading (O.timingEnabled) and write timing.txt', boolean,
                     '0 or 1', flag),
+    **CYCLE_JUMP,
 }
 
 # What decides a packing: these parameters and the version of the preparation. Bump the version
@@ -242,8 +243,9 @@ class OedometerParameters(Parameters):
         p, bad = self, self.bad
         dt = self.loadingTimeStep()
         checkDensityStep(bad, p['densityStep'], self.startTimeStep(), p['timeStep'])
+        checkCycleJump(bad, p)
         steps = p['cycles'] / p['f'] / dt
-        if steps > MAX_LOADING_STEPS:
+        if steps > MAX_LOADING_STEPS and not p['jump']:   # jumping: the cycles simulated are not known
             bad('f', '%d cycles at %g Hz take %.3g time steps of %.3g s (the loading time step), '
                      'more than the %.0e a run may take: raise f or lower cycles' % (p['cycles'], p['f'], steps, dt,
                                                                                       MAX_LOADING_STEPS))

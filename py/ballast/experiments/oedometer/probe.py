@@ -1,6 +1,7 @@
 """What the outputs read of a running oedometer, and nothing more: the parameters, the plate (the
 grains' force on it, its displacement, the applied force of eq. 8), the cylinder, the engines' counters
-and events, the grading against the start of loading, the inertial number, and the run directory."""
+and events, the grading against the start of loading, the inertial number, the cycle jumper (None without
+jump), and the run directory."""
 import math
 
 import numpy as np
@@ -30,8 +31,13 @@ def counter(label, name):
 
 
 class Probe:
-    def __init__(self, p, loading, rig, runDir, initial):
+    def __init__(self, p, loading, rig, runDir, initial, jumper=None):
         self.p, self.loading, self.rig, self.dir, self.initial = p, loading, rig, runDir, initial
+        self.jumper = jumper
+
+    def cyclesJumped(self):
+        """Cycles advanced by cycle jumping, not simulated."""
+        return self.jumper.jumped if self.jumper is not None else 0
 
     @property
     def T(self):

@@ -1,0 +1,75 @@
+"""Cycle jumping in the oedometer (docs/cycles.md) on the small packing of test_oedometer_experiment.py between
+Fmax and 0.2 Fmax at 20 Hz, with ft0 set so that the most loaded grain peaks at s = 0.6 of its strength (the strong
+run's largest ratio scales with 1/ft0 while nothing crushes) and fatigue of exponent 4: it loses (1 - 0.6) 0.6^4 =
+0.052 a cycle and survives floor(0.4 / 0.052) = 7 peaks, so it crushes in a dozen cycles (cycle 13 directly). With
+jumping the cycles are numbered with the jumped ones, every jump is recorded, and no jump steps over the first
+crush; a run whose jumps are never allowed is the run without jumping, bit for bit."""
+import os
+
+import numpy as np
+import pandas as pd
+import pytest
+
+pytest.importorskip('yade')
+from ballast.oedometer import Oedometer  # noqa: E402
+from ballast.params import ParamError  # noqa: E402
+from test_oedometer_experiment import F_STRONG, FMAX, SMALL  # noqa: E402
+
+FATIGUE = dict(f=F_STRONG, strength=1e15, Fmin=0.2 * FMAX, fatigue=True, fatigueExponent=4, fatigueEndurance=0.3,
+               fatigueHysteresis=0.05)
+JUMP = dict(jump=True, jumpWindow=3, jumpMargin=0, jumpMaxDamage=0.5, jumpSteady=1.0)
+PEAK = 0.6   # [-] the largest stress ratio of the first cycle
+
+
+@pytest.fixture(scope='module')
+def root(tmp_path_factory):
+    return str(tmp_path_factory.mktemp('oedometer-jump'))
+
+
+@pytest.fixture(scope='module')
+def ft0(root):
+    """ft0 [Pa m] that puts the most loaded grain of the first cycle at PEAK."""
+    run = Oedometer(f=F_STRONG, ft0=1e12, strength=1e15, results=root, runId='strong',
+                    packingDir=os.path.join(root, 'packings'), **SMALL)
+    run.run()
+    smax = pd.read_csv(os.path.join(run.out, 'checks.csv')).iloc[:, 3].max()
+    return 1e12 * smax / PEAK
+
+
+def test_jumping_numbers_the_cycles_and_never_steps_over_the_first_crush(root, ft0):
+    run = Oedometer(ft0=ft0, cycles=14, results=root, runId='jump', packingDir=os.path.join(root, 'packings'),
+                    **SMALL, **FATIGUE, **JUMP)
+    s = run.run()
+    cyc = pd.read_csv(os.path.join(run.out, 'cycles.csv'))
+    jumps = pd.read_csv(os.path.join(run.out, 'jumps.csv'))
+    assert s['cycles'] == 14 and cyc.cycle.iloc[-1] == 14 and s['jumps'] == len(jumps) >= 1
+    assert s['cyclesSimulated'] == len(cyc) and s['cyclesSimulated'] + s['cyclesJumped'] == 14
+    assert np.array_equal(cyc.cycle, np.arange(1, len(cyc) + 1) + cyc.jumped)
+    assert list(cyc.cycle[:4]) == [1, 2, 3, 4]                        # the window's cycles, simulated
+    first = int(cyc.cycle[cyc.nCrushed > 0].iloc[0])                  # the first crush, a fatigue crush
+    assert s['nFatigueCrushed'] == s['nCrushed'] >= 1
+    for _, e in jumps.iterrows():                                      # each jump ends before the cycle it fails in
+        assert e.to + JUMP['jumpMargin'] + 1 < first or e.cycle >= first
+    for name in list(jumps.stateBefore) + list(jumps.stateAfter):
+        assert os.path.isfile(os.path.join(run.out, name))
+
+
+def test_a_run_whose_jumps_are_never_allowed_is_the_run_without_jumping(root, ft0):
+    out = {}
+    for name, extra in (('off', {}), ('never', dict(JUMP, jumpMaxDamage=1e-12))):
+        run = Oedometer(ft0=ft0, cycles=5, results=root, runId=name, packingDir=os.path.join(root, 'packings'),
+                        **SMALL, **FATIGUE, **extra)
+        s = run.run()
+        out[name] = {f: open(os.path.join(run.out, f)).read() for f in ('fd.csv', 'checks.csv', 'events.csv')}
+        out[name]['cycles'] = pd.read_csv(os.path.join(run.out, 'cycles.csv')).iloc[:, :8]
+        if name == 'never':
+            assert s['jumps'] == 0 and s['cyclesJumped'] == 0
+    assert out['off']['cycles'].maxDamage.iloc[-1] > 0
+    for f in ('fd.csv', 'checks.csv', 'events.csv'):
+        assert out['off'][f] == out['never'][f], f
+    pd.testing.assert_frame_equal(out['off']['cycles'], out['never']['cycles'], check_exact=True)
+
+
+def test_jumping_needs_fatigue():
+    with pytest.raises(ParamError, match='jump = True is not allowed: cycle jumping advances fatigue damage'):
+        Oedometer(jump=True, **SMALL)
