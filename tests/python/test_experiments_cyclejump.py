@@ -18,15 +18,16 @@ def crushCycle(monkeypatch, jumper, maxCycles=200):
     """Runs load cycles of PER_CYCLE steps, the jumper told at each cycle's end; returns (the cycle the grain
     crushed in, counting the jumped ones, the jumper)."""
     g, crush = fatigueGrain(monkeypatch)
-    cycle = 0
+    cycle = simulated = 0
     if jumper is not None:
         jumper.target = maxCycles
     while cycle < maxCycles:
         O.run(PER_CYCLE, True)
-        cycle += 1
+        cycle, simulated = cycle + 1, simulated + 1
         if crush.nCrushed:
             return cycle, jumper
-        if jumper is not None and jumper.cycleEnded(crush, [g], cycle, 1e-4 * math.log(cycle) + 1e-4, False):
+        # a bed settling 1e-4 (1 + ln n) m after n simulated cycles
+        if jumper is not None and jumper.cycleEnded(crush, [g], cycle, 1e-4 * (1 + math.log(simulated)), False):
             entry = jumper.apply(crush)
             assert entry['to'] < CRUSH_CYCLE - 1 - jumper.margin + 1   # never into the cycles before the failing one
             cycle = entry['to']
@@ -56,12 +57,19 @@ def test_small_jumps_add_up_to_the_same_damage(monkeypatch):
 
 
 def test_the_settlement_of_a_jump_comes_from_the_log_law_of_the_simulated_cycles(monkeypatch):
-    """The settlements reported here follow s = 1e-4 (1 + ln N) exactly: the law is found and a jump from N0
-    to N0 + DN extrapolates 1e-4 ln((N0 + DN) / N0)."""
+    """The bed here settles s = 1e-4 (1 + ln n) after n simulated cycles exactly: the law is found; a jump from
+    cycle N0 to N0 + DN adds 1e-4 ln((N0 + DN) / N0), and at the n-th simulated cycle, cycle N of the count, the
+    jumped cycles' settlement is 1e-4 ln(N / n)."""
+    from ballast.experiments.cyclejump import settlementJumped
     _, j = crushCycle(monkeypatch, CycleJumper(window=2, steady=0.2, maxDamage=0.99, margin=0))
     e = j.jumps[0]
     assert e['settlementLawB'] == pytest.approx(1e-4, rel=1e-9) and e['settlementLawR2'] == pytest.approx(1, abs=1e-12)
     assert e['settlementJumped'] == pytest.approx(1e-4 * math.log(e['to'] / e['cycle']), rel=1e-9)
+    N = np.array([c for c, _ in j.direct])
+    n = np.arange(1, len(N) + 1)
+    assert N[-1] > n[-1]
+    np.testing.assert_allclose(settlementJumped(N, [s for _, s in j.direct]), 1e-4 * np.log(N / n), rtol=1e-9,
+                               atol=1e-18)
 
 
 def test_the_jumpers_state_comes_back_whole(monkeypatch):

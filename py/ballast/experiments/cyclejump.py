@@ -2,8 +2,9 @@
 experiment reports the cycle; over the last `window` simulated cycles without a crush or an abrasion the
 jumper measures each grain's fatigue damage rate, and where the C++ core (pkg/CycleJump.hpp) allows a jump
 of DN cycles every grain's damage is advanced by DN rates at once. Crushes are never extrapolated: the jump
-ends before the cycle the first grain would fail in. The grains do not move during a jump, so its permanent
-settlement is extrapolated from the law s = a + b ln N fitted to the simulated cycles, and reported apart.
+ends before the cycle the first grain would fail in. The grains do not move during a jump: the bed has seen
+n simulated cycles when the count says N, so the settlement of the jumped cycles is b ln(N / n), with b of
+the law s = a + b ln n fitted to the simulated cycles (:func:`settlementJumped`), reported apart.
 
 The experiment owns the cycle count and the states: it calls :meth:`CycleJumper.cycleEnded` at each simulated
 cycle's end, and when that returns a plan, :meth:`CycleJumper.apply` at the start of the next step (where a
@@ -28,6 +29,21 @@ def _unpack(s):
     return None if s is None else np.frombuffer(base64.b64decode(s['data']), dtype=float).reshape(s['shape']).copy()
 
 
+def settlementLaw(settlements):
+    """The law s = a + b ln n fitted to the simulated cycles' settlements [m] (the n-th simulated cycle's at n):
+    {a, b, r2}, None below 3 cycles."""
+    return fitLaws(np.arange(1, len(settlements) + 1), settlements)['log'] if len(settlements) >= 3 else None
+
+
+def settlementJumped(cycles, settlements):
+    """The settlement [m] the jumped cycles add at each simulated cycle: the n-th simulated cycle is cycle N of the
+    count (cycles), the bed saw n, so b ln(N / n) with b of the law fitted to every simulated settlement; 0 without
+    a fit."""
+    law = settlementLaw(settlements)
+    n = np.arange(1, len(cycles) + 1)
+    return law['b'] * np.log(np.asarray(cycles, float) / n) if law else np.zeros(len(cycles))
+
+
 @runtime.persistent('CycleJumper')
 class CycleJumper:
     """The damage rates of the last simulated cycles, the jumps made and the settlement they extrapolated.
@@ -40,10 +56,10 @@ class CycleJumper:
         self.ids = []             # the grains of the window (body ids)
         self.last = None          # (2, n): their damage D and damaging peaks at the last cycle's end (after a jump)
         self.increments = []      # per simulated cycle of the window: (3, n) increments of D and peaks, the largest peak
-        self.direct = []          # [cycle, settlement (with the jumps' extrapolation) [m]] of every simulated cycle
+        self.direct = []          # [cycle (with the jumped ones), simulated settlement [m]] of every simulated cycle
         self.jumps = []           # one dict per jump (LOG_COLUMNS)
         self.jumped = 0           # cycles not simulated [cycles]
-        self.extrapolated = 0.0   # settlement of the jumped cycles [m]
+        self.extrapolated = 0.0   # settlement of the jumped cycles [m] as the last jump's law gave it
         self.pending = None       # the plan of the jump to make at the next step
 
     @classmethod
@@ -55,7 +71,7 @@ class CycleJumper:
         """A simulated cycle `cycle` (numbered with the jumped ones) ended with the simulated permanent settlement
         [m]; changed: a grain crushed or abraded in it. engine: the BallastCrushEngine with fatigue; ids: the
         grains. Returns the plan of a jump (also kept as pending) or None."""
-        self.direct.append([int(cycle), float(settlement) + self.extrapolated])
+        self.direct.append([int(cycle), float(settlement)])
         ids = [int(i) for i in ids]
         F = engine.fatigueState(ids)
         now = np.vstack([F[:, 0], F[:, 3]])
@@ -91,10 +107,10 @@ class CycleJumper:
         engine.advanceFatigue(ids, dD, dP)
         self.last = self.last + np.vstack([dD, dP])
         N0 = plan['cycle']
-        law = fitLaws(*zip(*self.direct))['log'] if len(self.direct) >= 3 else None
-        ds = law['b'] * np.log((N0 + n) / N0) if law else 0.0
-        self.extrapolated += float(ds)
+        law = settlementLaw([s for _, s in self.direct])
         self.jumped += n
+        ds = law['b'] * np.log((N0 + n) / N0) if law else 0.0   # what this jump adds to b ln(N / n)
+        self.extrapolated += float(ds)
         entry = {'jump': len(self.jumps) + 1, 'cycle': N0, 'cycles': n, 'to': N0 + n, 'limit': plan['limit'],
                  'grain': plan['grain'], 'maxRate': plan['maxRate'],
                  'maxDamage': float(np.max(engine.fatigueState(ids)[:, 0])) if ids else 0.0,

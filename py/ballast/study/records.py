@@ -19,7 +19,7 @@ full one:
                             criterion's stress over the strength it crushed at [-]
         record.json         what was left out: rows of fd.csv and checks.csv, the largest stress ratio
                             of all checks
-        psd.csv, cycles.csv copied if the run wrote them
+        psd.csv, cycles.csv, jumps.csv   copied if the run wrote them
 
 The study runner skips a row whose record exists (the same test as for a finished run: its
 summary.json parses), so a session runs a slice, commits the records, and the next one, on any
@@ -40,7 +40,7 @@ from .options import experimentDeclaration
 
 MAX_FD_ROWS = 600          # rows of a recorded F-delta curve [-]: ~40 kB, enough for the paper's figures
 MAX_CHECK_ROWS = 400       # rows of a recorded per-check log [-]
-COPIED = ('summary.json', 'row.json', 'psd.csv', 'cycles.csv')
+COPIED = ('summary.json', 'row.json', 'psd.csv', 'cycles.csv', 'jumps.csv')
 # the thinning keeps every step of these to its resolution; F, the grains' force on the plate, saws at
 # the plate's impacts and is recorded at the rows kept (its peak is in summary.json)
 FD_QUANTITIES = ('delta', 'Fapplied')

@@ -31,7 +31,7 @@ from ... import grading as gr
 from ...engines import BallastAbrasionEngine, BallastCrushEngine
 from ...study.files import saveFigure, writeAtomic
 from .. import grains
-from ..cyclejump import LOG_COLUMNS
+from ..cyclejump import LOG_COLUMNS, settlementJumped
 from ..oedometer.outputs import _array, _unstructured, writeContactsVtu, writePvd
 from . import zones
 
@@ -80,9 +80,8 @@ def cycleTable(exp):
     rec, j = exp.recorder, exp.jumper
     cyc = pd.DataFrame(rec.cycles, columns=rec.CYCLE_COLUMNS)
     if j is not None:
-        total = dict((int(c), s) for c, s in j.direct)
         cyc['jumped'] = cyc.cycle.astype(int) - np.arange(1, len(cyc) + 1)
-        cyc['settlementJumped'] = [total.get(int(c), s) - s for c, s in zip(cyc.cycle, cyc.settlement)]
+        cyc['settlementJumped'] = settlementJumped(cyc.cycle, cyc.settlement)
     return cyc
 
 
@@ -130,10 +129,10 @@ def jumpSummary(exp, cyc):
     j = exp.jumper
     if j is None:
         return {}
-    s = float(cyc.settlement.iloc[-1]) if len(cyc) else 0.0
+    s, sj = (float(cyc.settlement.iloc[-1]), float(cyc.settlementJumped.iloc[-1])) if len(cyc) else (0.0, 0.0)
     return {'cycles': int(cyc.cycle.iloc[-1]) if len(cyc) else 0, 'cyclesSimulated': len(cyc),
-            'cyclesJumped': int(exp.recorder.jumped), 'jumps': len(j.jumps), 'settlementJumped': j.extrapolated,
-            'settlementTotal': s + j.extrapolated}
+            'cyclesJumped': int(exp.recorder.jumped), 'jumps': len(j.jumps), 'settlementJumped': sj,
+            'settlementTotal': s + sj}
 
 
 def appendSample(exp, row):

@@ -19,7 +19,7 @@ from yade.wrapper import Facet, Sphere
 
 from ... import _ballast, grading, harvest, runtime
 from ...study.files import saveFigure, writeAtomic
-from ..cyclejump import LOG_COLUMNS
+from ..cyclejump import LOG_COLUMNS, settlementJumped
 
 FD_COLUMNS = ('t', 'F', 'delta', 'nCrushed', 'nAbraded', 'Fapplied')
 CHECK_COLUMNS = ('t', 'iter', 'nCrushed', 'maxStressRatio', 'maxCrushableRatio', 'inertialNumber')
@@ -191,15 +191,15 @@ class Outputs:
         self.cycleRows.append((k, t, settlement, deepest - settlement, crushed, abraded, grading.marsal(*exp.grading()),
                                exp.counter('crush', 'maxDamage')))
         j = exp.jumper
-        total = dict((int(c), s) for c, s in j.direct) if j is not None else {}
-        total[k] = settlement + (j.extrapolated if j is not None else 0.0)   # the jumper reads this row after
+        if j is not None:
+            jumpedSettlement = settlementJumped([r[0] for r in self.cycleRows], [r[2] for r in self.cycleRows])
         lines = [','.join(CYCLE_COLUMNS + (('jumped', 'settlementJumped') if j is not None else ())) + '\n']
         for i, row in enumerate(self.cycleRows):
             prev = self.cycleRows[i - 1][4:6] if i else (0, 0)
             line = '%d,%.9g,%.9g,%.9g,%d,%d,%.6g,%.6g' % (tuple(row[:4]) + (row[4] - prev[0], row[5] - prev[1],
                                                          row[6], row[7] if len(row) > 7 else 0.0))
             if j is not None:   # with jumping: the cycles jumped before this row, the settlement extrapolated over them
-                line += ',%d,%.9g' % (row[0] - (i + 1), total.get(int(row[0]), row[2]) - row[2])
+                line += ',%d,%.9g' % (row[0] - (i + 1), jumpedSettlement[i])
             lines.append(line + '\n')
         writeAtomic(os.path.join(exp.out, 'cycles.csv'), ''.join(lines))
 
