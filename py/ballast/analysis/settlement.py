@@ -23,11 +23,16 @@ def curves(paths):
             if c is None or 'settlement' not in c:
                 continue
             rows.append(pd.DataFrame({'study': path, 'runId': run.runId, 'seed': run.params.get('seed'),
-                                      'cycle': c['cycle'].astype(int), 'settlement': c['settlement'],
+                                      'cycle': c['cycle'].astype(int), 'settlement': total(c),
                                       'resilient': c['resilient'] if 'resilient' in c else math.nan}))
     if not rows:
         raise ValueError('curves: no run with a cycles.csv (cycle, settlement) in %s' % ', '.join(paths))
     return pd.concat(rows, ignore_index=True)
+
+
+def total(cycles):
+    """The settlement [m] of each row of cycles.csv; with cycle jumping, the jumped cycles' extrapolation added."""
+    return cycles['settlement'] + (cycles['settlementJumped'] if 'settlementJumped' in cycles else 0.0)
 
 
 def summary(frame):

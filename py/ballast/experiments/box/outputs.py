@@ -67,7 +67,11 @@ def crushes(exp):
     ev = [e for eng in O.engines if isinstance(eng, BallastCrushEngine) for e in eng.events]
     t = np.array([e['t'] - rec.t0 for e in ev])
     xyz = np.array([e['pos'] for e in ev]).reshape(-1, 3)
-    df = pd.DataFrame({'t': t, 'cycle': np.floor(t / rec.period).astype(int) + 1 if len(ev) else [], 'id': [e['id'] for e in ev],
+    # the cycle in the count: the n-th simulated cycle is the n-th row of cycles.csv (later: n + the cycles jumped)
+    closed = [int(c[0]) for c in rec.cycles]
+    simulated = np.floor(t / rec.period).astype(int) + 1 if len(ev) else np.zeros(0, int)
+    cycle = [closed[n - 1] if n <= len(closed) else n + rec.jumped for n in simulated]
+    df = pd.DataFrame({'t': t, 'cycle': cycle, 'id': [e['id'] for e in ev],
                        'x': xyz[:, 0], 'y': xyz[:, 1], 'z': xyz[:, 2], 'radius': [e['radius'] for e in ev],
                        'depth': exp.initial['zBase'] - xyz[:, 2]})
     df['zone'] = zones.zoneOf(df.x, df.y, **p.geometry())

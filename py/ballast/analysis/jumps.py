@@ -1,0 +1,129 @@
+"""Cycle jumping against direct simulation (docs/cycles.md, "Validation"), for any cyclic experiment whose runs
+write cycles.csv (cycle, t, settlement; with jumping also settlementJumped) and crushes (t): each run of a study
+simulated directly is paired with the run of the same seed and cycles made with jumping, and compared on the
+cycles of the first crushes, the crushes and the settlement after the last cycle, and their CPU; the long runs
+(jumping only) give settlement and crushes against log N. Reads the studies with ballast.study.data. No YADE."""
+import numpy as np
+import pandas as pd
+
+from ..study.data import StudyRuns
+
+FIRST = 3   # the first crushes compared, by their cycle
+# the tolerances, each relative to the direct run's value or absolute, whichever is larger (docs/cycles.md)
+TOL_CYCLE = (0.10, 2)          # ([-], [cycles]) the cycle of each of the first crushes
+TOL_CRUSHES = (0.20, 2)        # ([-], [crushes]) the crushes after the last cycle
+TOL_SETTLEMENT = (0.25, 5e-5)  # ([-], [m]) the settlement after the last cycle (the jumped cycles' included)
+
+
+def crushCycles(run):
+    """The cycle (in the count, jumped cycles included) of every crush of the run: the n-th simulated cycle is the
+    n-th row of cycles.csv, ending at its t [s]."""
+    cyc, cr = run.cycles, run.crushes
+    if cr is None or len(cr) == 0:
+        return np.zeros(0, int)
+    n = np.searchsorted(cyc.t.to_numpy(), cr.t.to_numpy(), side='left')     # rows ended before the crush
+    counted = cyc.cycle.to_numpy()
+    # after the last row: the cycle the run stopped in (a sleeper on the floor)
+    return np.array([counted[k] if k < len(counted) else int(counted[-1]) + 1 for k in n], dtype=int)
+
+
+def _settlement(run):
+    c = run.cycles
+    extra = c.settlementJumped.iloc[-1] if 'settlementJumped' in c else 0.0
+    return float(c.settlement.iloc[-1] + extra)
+
+
+def _within(a, b, tol):
+    rel, absolute = tol
+    return bool(abs(a - b) <= max(rel * abs(b), absolute))
+
+
+def _runs(path):
+    study = StudyRuns(path)
+    rows = []
+    for run in study.runs:
+        p = run.params
+        rows.append({'runId': run.runId, 'seed': int(p['seed']), 'cycles': int(p['cycles']), 'jump': bool(p['jump']),
+                     'run': run})
+    return pd.DataFrame(rows)
+
+
+def compare(path):
+    """Per seed and cycle count run both ways: a DataFrame with, for direct (d) and jumping (j), the cycles
+    simulated, the CPU [s], the first FIRST crush cycles, the crushes and the settlement [m] after the last cycle,
+    and whether each agrees within its tolerance."""
+    runs = _runs(path)
+    out = []
+    for (seed, cycles), g in runs.groupby(['seed', 'cycles']):
+        if set(g.jump) != {False, True}:
+            continue
+        d, j = (g[g.jump == flag].iloc[0].run for flag in (False, True))
+        cd, cj = crushCycles(d), crushCycles(j)
+        row = {'seed': seed, 'cycles': cycles, 'simulatedDirect': len(d.cycles), 'simulatedJump': len(j.cycles),
+               'cpuDirect': d.summary['cpuSeconds'], 'cpuJump': j.summary['cpuSeconds'],
+               'crushesDirect': int(d.summary['nCrushed']), 'crushesJump': int(j.summary['nCrushed']),
+               'settlementDirect': _settlement(d), 'settlementJump': _settlement(j)}
+        for k in range(FIRST):
+            a = int(cd[k]) if k < len(cd) else None
+            b = int(cj[k]) if k < len(cj) else None
+            row['crush%dDirect' % (k + 1)], row['crush%dJump' % (k + 1)] = a, b
+            row['crush%dAgrees' % (k + 1)] = (a is None and b is None) or (
+                a is not None and b is not None and _within(b, a, TOL_CYCLE))
+        row['crushesAgree'] = _within(row['crushesJump'], row['crushesDirect'], TOL_CRUSHES)
+        row['settlementAgrees'] = _within(row['settlementJump'], row['settlementDirect'], TOL_SETTLEMENT)
+        row['cpuRatio'] = row['cpuJump'] / row['cpuDirect']
+        out.append(row)
+    return pd.DataFrame(out)
+
+
+def longRuns(path, atLeast=1000):
+    """The jumping runs of at least `atLeast` cycles: cycles, simulated, jumps, CPU [s], crushes, settlement [m]
+    (the jumped cycles' included) and its extrapolated part."""
+    runs = _runs(path)
+    out = []
+    for _, r in runs[runs.jump & (runs.cycles >= atLeast)].iterrows():
+        s = r.run.summary
+        out.append({'runId': r.runId, 'seed': r.seed, 'cycles': int(s['cycles']), 'simulated': s['cyclesSimulated'],
+                    'jumps': s['jumps'], 'cpuSeconds': s['cpuSeconds'], 'crushes': int(s['nCrushed']),
+                    'settlement': _settlement(r.run), 'settlementJumped': s['settlementJumped'],
+                    'stoppedBy': s.get('stoppedBy')})
+    return pd.DataFrame(out)
+
+
+def figure(path, out):
+    """Settlement (jumped cycles' included) and crushes against log N: every run, direct solid, jumping dashed,
+    one colour per seed."""
+    import matplotlib
+    matplotlib.use('Agg')
+    import matplotlib.pyplot as plt
+    from ..study.files import saveFigure
+    runs = _runs(path)
+    fig, (ax, bx) = plt.subplots(2, 1, figsize=(7, 7.2), sharex=True)
+    seeds = sorted(runs.seed.unique())
+    for _, r in runs.sort_values(['seed', 'cycles', 'jump']).iterrows():
+        c = r.run.cycles
+        total = c.settlement + (c.settlementJumped if 'settlementJumped' in c else 0.0)
+        colour = 'C%d' % seeds.index(r.seed)
+        style = '-' if not r.jump else ('--' if r.cycles <= 1000 else ':')
+        label = 'seed %d, %s, %d cycles' % (r.seed, 'jumping' if r.jump else 'direct', r.cycles)
+        ax.semilogx(c.cycle, 1e3 * total, style, color=colour, lw=1.2 if not r.jump else 1.0, label=label)
+        cc = crushCycles(r.run)
+        if len(cc):
+            n = np.sort(cc)
+            bx.step(np.concatenate([[1], n]), np.arange(len(n) + 1), style, color=colour, where='post', lw=1.0)
+    ax.set_ylabel('permanent settlement [mm]\n(jumped cycles extrapolated)')
+    bx.set_ylabel('crushes so far')
+    bx.set_xlabel('load cycles N')
+    for a in (ax, bx):
+        a.grid(True, which='both', alpha=0.3)
+    ax.legend(fontsize=6, ncol=2)
+    ax.set_title('Cycle jumping against direct simulation: %s' % path.rstrip('/').split('/')[-1], fontsize=9)
+    fig.tight_layout()
+    saveFigure(fig, out)
+    plt.close(fig)
+
+
+def verdict(table):
+    """How many pairs agree on each compared quantity (of those compared)."""
+    cols = ['crush%dAgrees' % (k + 1) for k in range(FIRST)] + ['crushesAgree', 'settlementAgrees']
+    return {c: '%d of %d' % (int(table[c].sum()), len(table)) for c in cols} if len(table) else {}
