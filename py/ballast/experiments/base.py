@@ -18,7 +18,9 @@ is a killed run.
 
 A subclass gives ``NAME``, ``Parameters`` (its Parameters class), ``REOPEN_PARAMS`` (what a reopened
 run may change: where and how it reports, not the physics), ``prepare()``, ``summary()``, and its
-state (``state()``, ``fromState()``); its pieces are registered objects of their own.
+state (``state()``, ``fromState()``); its pieces are registered objects of their own. A cyclic experiment
+offers cycle jumping (``jump``, docs/cycles.md) with :meth:`startJumping` when its cycles start, a
+``jumper`` piece, :meth:`cycleClosed` at each simulated cycle's end and :meth:`jumped` if it counts cycles.
 """
 import gzip
 import json
@@ -31,13 +33,15 @@ from yade import O
 
 from .. import runtime
 from ..engines import BallastAbrasionEngine, BallastCrushEngine
-from . import chain, timestep
+from . import chain, grains, timestep
+from .cyclejump import CycleJumper
 from ..names import runDirName
 from ..params import CRUSH, ParamError, requireWritableDir
 from ..study.files import syncDir, writeAtomic
 from .phases import Phases
 
 STATUS_FILE = 'run.json'
+JUMPER = 'cycleJumper'   # the label of the callback that makes a planned jump
 
 
 class StateFileError(RuntimeError):
@@ -219,6 +223,39 @@ class Experiment:
                                                iterPeriod=p['abrasionPeriod'], scaledPWaveStep=p.scaledPWaveStep(),
                                                label='abrasion'))
         O.engines = O.engines + extra
+
+    # ------------------------------------------------------------------ cycle jumping (experiments.cyclejump)
+    def startJumping(self):
+        """With jump: the jumper (self.jumper, a piece) and, first in the chain, the callback that makes a jump at
+        the start of the step after the cycle that planned it (where a saved state resumes exactly)."""
+        self.jumper = CycleJumper.of(self.p)
+        if self.jumper is not None:
+            O.engines = [runtime.callback(self, 'jumpNow', iterPeriod=1, dead=True, label=JUMPER)] + list(O.engines)
+            self.adopt()
+
+    def cycleClosed(self, cycle, settlement, changed):
+        """The experiment's call at the end of each simulated cycle (numbered with the jumped ones), with its
+        permanent settlement [m] and whether a grain crushed or abraded in it: the jumper reads the grains' damage
+        and plans a jump, made at the next step."""
+        ids = [b.id for b in grains.spheres()]
+        if self.jumper.cycleEnded(chain.engine('crush'), ids, cycle, settlement, changed):
+            chain.engine(JUMPER).dead = False
+
+    def jumpNow(self):
+        """The state before, the jump, the state after (state-jump<K>-before/after.yade.gz), jumps.csv."""
+        chain.engine(JUMPER).dead = True
+        k = len(self.jumper.jumps) + 1
+        before, after = 'state-jump%04d-before.yade.gz' % k, 'state-jump%04d-after.yade.gz' % k
+        self.save(os.path.join(self.out, before))
+        e = self.jumper.apply(chain.engine('crush'), before, after)
+        self.jumped(e['cycles'])
+        self.save(os.path.join(self.out, after))
+        self.jumper.writeLog(os.path.join(self.out, 'jumps.csv'))
+        self.say('jump %d: cycles %d -> %d (bound: %s), largest damage rate %.3g a cycle, settlement %+.4f mm '
+                 'extrapolated' % (k, e['cycle'], e['to'], e['limit'], e['maxRate'], 1e3 * e['settlementJumped']))
+
+    def jumped(self, cycles):
+        """After a jump of `cycles` (subclasses whose own records count cycles move them on)."""
 
     def say(self, msg):
         self.phases.say(msg)

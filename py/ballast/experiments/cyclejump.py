@@ -12,9 +12,11 @@ saved state resumes exactly), saving the states before and after."""
 import base64
 
 import numpy as np
+import pandas as pd
 
 from .. import _ballast, runtime
 from ..settlementlaws import fitLaws
+from ..study.files import writeAtomic
 
 LOG_COLUMNS = ('jump', 'cycle', 'cycles', 'to', 'limit', 'grain', 'maxRate', 'maxDamage', 'settlementLawA',
                'settlementLawB', 'settlementLawR2', 'settlementJumped', 'stateBefore', 'stateAfter')
@@ -119,6 +121,10 @@ class CycleJumper:
                  'stateBefore': before, 'stateAfter': after}
         self.jumps.append(entry)
         return entry
+
+    def writeLog(self, path):
+        """jumps.csv: a row per jump (LOG_COLUMNS)."""
+        writeAtomic(path, pd.DataFrame(self.jumps, columns=LOG_COLUMNS).to_csv(index=False, float_format='%.9g'))
 
     # ------------------------------------------------------------------ saving
     def state(self):

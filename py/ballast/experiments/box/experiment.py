@@ -27,11 +27,10 @@ from ...params import ParamError, requireWritableDir, validate
 from .. import chain, grains, preparation, timestep
 from ..base import Experiment
 from ..oedometer import scene
-from ..cyclejump import CycleJumper
 from . import bed, outputs
 from .parameters import OWNER, PARAMS, BoxParameters
 
-LOAD, RECORDER, SAVER, JUMPER = 'boxLoad', 'boxRecorder', 'boxSaver', 'boxJumper'
+LOAD, RECORDER, SAVER = 'boxLoad', 'boxRecorder', 'boxSaver'
 SEAT_STILL = (0.01, 2e-6)     # ([s], [m]): seated when the sleeper moved less than this over that time
 SEAT_TIME = (0.02, 0.2)       # [s] shortest and longest seating (a bed of spheres creeps under a sleeper: docs/box.md)
 SLEEPER_STIFFNESS_MARGIN = 2.0  # [-] densityStep: the sleeper's contacts may stiffen this much as grains crush
@@ -207,10 +206,7 @@ class BoxTest(Experiment):
                                                   virtLast=rec.t0, initRun=True, label=RECORDER)]
         if p['saveEvery'] > 0:   # first in the chain: a state saved before the step begins resumes exactly
             O.engines = [runtime.callback(self, 'checkpoint', iterPeriod=1, dead=True, label=SAVER)] + list(O.engines)
-        self.jumper = CycleJumper.of(p)
-        if self.jumper is not None:   # first in the chain too: the states around a jump resume exactly
-            O.engines = [runtime.callback(self, 'jumpNow', iterPeriod=1, dead=True, label=JUMPER)] + list(O.engines)
-            self.adopt()
+        self.startJumping()
         plot.reset()
         plot.plots = {'settlement': ('F',)}   # YADE's live plot: the load against the settlement
         if p['densityStep'] > 0:
@@ -248,7 +244,8 @@ class BoxTest(Experiment):
             if self.p['saveEvery'] and k % self.p['saveEvery'] == 0:
                 chain.engine(SAVER).dead = False   # wakes at the start of the next step
             if self.jumper is not None:
-                self.cycleEnded(k)
+                row = dict(zip(Recorder.CYCLE_COLUMNS, self.recorder.cycles[-1]))
+                self.cycleClosed(k, row['settlement'], row['crushes'] + row['abrasions'] > 0)
 
     def checkpoint(self):
         """The saver's call (saveEvery), at the start of the step after a cycle closed: a state to reopen a long
@@ -256,27 +253,8 @@ class BoxTest(Experiment):
         chain.engine(SAVER).dead = True
         self.save(os.path.join(self.out, 'state-cycle%07d.yade.gz' % self.cyclesDone()))
 
-    def cycleEnded(self, k):
-        """Cycle jumping: the jumper reads the cycle k just closed; a jump it plans is made at the next step."""
-        row = dict(zip(Recorder.CYCLE_COLUMNS, self.recorder.cycles[-1]))
-        crush = chain.engine('crush')
-        ids = [b.id for b in grains.spheres()]
-        if self.jumper.cycleEnded(crush, ids, k, row['settlement'], row['crushes'] + row['abrasions'] > 0):
-            chain.engine(JUMPER).dead = False
-
-    def jumpNow(self):
-        """The jumper's call at the start of the step after a cycle closed: the state before, the jump, the state
-        after (state-jump<K>-before/after.yade.gz), jumps.csv."""
-        chain.engine(JUMPER).dead = True
-        k = len(self.jumper.jumps) + 1
-        before, after = 'state-jump%04d-before.yade.gz' % k, 'state-jump%04d-after.yade.gz' % k
-        self.save(os.path.join(self.out, before))
-        e = self.jumper.apply(chain.engine('crush'), before, after)
-        self.recorder.jump(e['cycles'])
-        self.save(os.path.join(self.out, after))
-        outputs.writeJumps(self)
-        self.say('jump %d: cycles %d -> %d (bound: %s), largest damage rate %.3g a cycle, settlement %+.4f mm '
-                 'extrapolated' % (k, e['cycle'], e['to'], e['limit'], e['maxRate'], 1e3 * e['settlementJumped']))
+    def jumped(self, cycles):
+        self.recorder.jump(cycles)
 
     def grade(self, k):
         """The grading (and with vtk a frame) after cycle k, once."""

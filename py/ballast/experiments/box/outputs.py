@@ -31,7 +31,7 @@ from ... import grading as gr
 from ...engines import BallastAbrasionEngine, BallastCrushEngine
 from ...study.files import saveFigure, writeAtomic
 from .. import grains
-from ..cyclejump import LOG_COLUMNS, settlementJumped
+from ..cyclejump import settlementJumped
 from ..oedometer.outputs import _array, _unstructured, writeContactsVtu, writePvd
 from . import zones
 
@@ -87,11 +87,6 @@ def cycleTable(exp):
         cyc['jumped'] = cyc.cycle.astype(int) - np.arange(1, len(cyc) + 1)
         cyc['settlementJumped'] = settlementJumped(cyc.cycle, cyc.settlement)
     return cyc
-
-
-def writeJumps(exp):
-    writeAtomic(os.path.join(exp.out, 'jumps.csv'),
-                pd.DataFrame(exp.jumper.jumps, columns=LOG_COLUMNS).to_csv(index=False, float_format='%.9g'))
 
 
 def summary(exp):

@@ -39,14 +39,14 @@ from ...study.files import writeAtomic
 from .. import chain, grains
 from .. import timestep
 from ..base import Experiment
-from ..cyclejump import CycleJumper, settlementJumped
+from ..cyclejump import settlementJumped
 from .loading import MODES
 from .outputs import Outputs
 from .packing import StoredPacking
 from .parameters import OWNER, PARAMS, OedometerParameters
 from .probe import Probe, counter, degradingEngines, engine
 
-SAVER, CONTAINMENT, JUMPER, JUMP_CYCLE = 'oedoSaver', 'oedoContainment', 'oedoJumper', 'oedoJumpCycle'
+SAVER, CONTAINMENT, JUMP_CYCLE = 'oedoSaver', 'oedoContainment', 'oedoJumpCycle'
 PLATE_STIFFNESS_MARGIN = 2.0  # [-] densityStep: the plate's contacts may stiffen this much as grains crush under it
 
 
@@ -141,29 +141,12 @@ class Oedometer(Experiment):
         return self.jumper.jumped if self.jumper is not None else 0
 
     def cycleEnded(self):
-        """Cycle jumping, after outputs.cycleEnd at each cycle's end: the jumper reads the row just closed; a jump it
-        plans is made at the start of the next step (jumpNow)."""
+        """Cycle jumping, after outputs.cycleEnd at each cycle's end: the row just closed goes to the jumper."""
         rows = self.outputs.cycleRows
         if not rows or (self.jumper.direct and self.jumper.direct[-1][0] >= rows[-1][0]):
             return
-        k, settlement = rows[-1][0], rows[-1][2]
         before = rows[-2][4:6] if len(rows) > 1 else (0, 0)
-        changed = rows[-1][4] != before[0] or rows[-1][5] != before[1]
-        ids = [b.id for b in grains.spheres()]
-        if self.jumper.cycleEnded(self.engine('crush'), ids, k, settlement, changed):
-            chain.engine(JUMPER).dead = False
-
-    def jumpNow(self):
-        """The state before, the jump, the state after (state-jump<K>-before/after.yade.gz), jumps.csv."""
-        chain.engine(JUMPER).dead = True
-        k = len(self.jumper.jumps) + 1
-        before, after = 'state-jump%04d-before.yade.gz' % k, 'state-jump%04d-after.yade.gz' % k
-        self.save(os.path.join(self.out, before))
-        e = self.jumper.apply(self.engine('crush'), before, after)
-        self.save(os.path.join(self.out, after))
-        self.outputs.writeJumps()
-        self.say('jump %d: cycles %d -> %d (bound: %s), largest damage rate %.3g a cycle, settlement %+.4f mm '
-                 'extrapolated' % (k, e['cycle'], e['to'], e['limit'], e['maxRate'], 1e3 * e['settlementJumped']))
+        self.cycleClosed(rows[-1][0], rows[-1][2], rows[-1][4] != before[0] or rows[-1][5] != before[1])
 
     def stopCondition(self):
         """The load phase's end test (checked every 200 steps): the displacement load has reached Fmax, or
@@ -227,13 +210,12 @@ class Oedometer(Experiment):
         x, r, m = grains.arrays()
         self.initial = {'massInitial': float(np.sum(m)), 'nGrainsInitial': len(r),
                         'volumeGrains': float(np.sum(sphereVolume(r))), 'radii': r.tolist(), 'masses': m.tolist()}
-        self.jumper = CycleJumper.of(p)
+        self.startJumping()
         self.probe = Probe(p, self.loading, self.rig, self.dir, self.initial, self.jumper)
         self.outputs.start(self.probe)
-        if self.jumper is not None:   # after outputs.cycleEnd; the jump first in the next step, where states resume exactly
-            O.engines = [runtime.callback(self, 'jumpNow', iterPeriod=1, dead=True, label=JUMPER)] + list(O.engines) + [
-                runtime.callback(self, 'cycleEnded', virtPeriod=self.T, virtLast=O.time, label=JUMP_CYCLE)]
-            self.adopt()
+        if self.jumper is not None:   # after outputs.cycleEnd, which closes the cycle's row
+            O.engines = O.engines + [runtime.callback(self, 'cycleEnded', virtPeriod=self.T, virtLast=O.time,
+                                                      label=JUMP_CYCLE)]
         # containment at simulated times (the recorder's period): the same in every identical run
         O.engines = O.engines + [runtime.callback(self, 'checkContainment', virtPeriod=self.T / p['samples'],
                                                   label=CONTAINMENT)]

@@ -13,13 +13,12 @@ import math
 import os
 
 import numpy as np
-import pandas as pd
 from yade import O, plot
 from yade.wrapper import Facet, Sphere
 
 from ... import _ballast, grading, harvest, runtime
 from ...study.files import saveFigure, writeAtomic
-from ..cyclejump import LOG_COLUMNS, settlementJumped
+from ..cyclejump import settlementJumped
 
 FD_COLUMNS = ('t', 'F', 'delta', 'nCrushed', 'nAbraded', 'Fapplied')
 CHECK_COLUMNS = ('t', 'iter', 'nCrushed', 'maxStressRatio', 'maxCrushableRatio', 'inertialNumber')
@@ -203,10 +202,6 @@ class Outputs:
             lines.append(line + '\n')
         writeAtomic(os.path.join(exp.out, 'cycles.csv'), ''.join(lines))
 
-    def writeJumps(self):
-        """jumps.csv: every jump of the cycle jumper (experiments.cyclejump.LOG_COLUMNS)."""
-        writeAtomic(os.path.join(self.exp.out, 'jumps.csv'), pd.DataFrame(
-            self.exp.jumper.jumps, columns=LOG_COLUMNS).to_csv(index=False, float_format='%.9g'))
 
     def logCheck(self):
         crush = self.exp.engine('crush')
