@@ -98,3 +98,16 @@ def test_a_run_whose_jumps_are_never_allowed_is_the_run_without_jumping(tmp_path
 def test_jumping_needs_fatigue():
     with pytest.raises(ParamError, match='jump = True is not allowed: cycle jumping advances fatigue damage'):
         BoxTest(**dict(SMALL, jump=True))
+
+
+def test_a_run_without_jumping_goes_on_with_it_in_a_slice(tmp_path, beds):
+    """A long run's slice (continueFrom) may switch jumping on: the slice jumps, its cycles counted on from the
+    saved run's."""
+    first = BoxTest(results=str(tmp_path), runId='direct', bedDir=beds, **dict(WEAK, cycles=3))
+    first.run()
+    test = BoxTest(results=str(tmp_path), runId='slice', bedDir=beds, continueFrom=os.path.join(first.out,
+                   'state-end.yade.gz'), **dict(WEAK, cycles=12), **JUMP)
+    s = test.run()
+    cyc = pd.read_csv(os.path.join(str(tmp_path), s['runId'], 'cycles.csv'))
+    assert s['cycles'] == 15 and s['jumps'] >= 1 and cyc.cycle.iloc[-1] == 15 and cyc.jumped.iloc[-1] > 0
+    assert list(cyc.cycle[:3]) == [1, 2, 3]                     # the saved run's cycles, simulated without jumps

@@ -54,20 +54,39 @@ def test_jumping_numbers_the_cycles_and_never_steps_over_the_first_crush(root, f
         assert os.path.isfile(os.path.join(run.out, name))
 
 
-def test_a_run_whose_jumps_are_never_allowed_is_the_run_without_jumping(root, ft0):
-    out = {}
-    for name, extra in (('off', {}), ('never', dict(JUMP, jumpMaxDamage=1e-12))):
-        run = Oedometer(ft0=ft0, cycles=5, results=root, runId=name, packingDir=os.path.join(root, 'packings'),
-                        **SMALL, **FATIGUE, **extra)
-        s = run.run()
-        out[name] = {f: open(os.path.join(run.out, f)).read() for f in ('fd.csv', 'checks.csv', 'events.csv')}
-        out[name]['cycles'] = pd.read_csv(os.path.join(run.out, 'cycles.csv')).iloc[:, :8]
-        if name == 'never':
-            assert s['jumps'] == 0 and s['cyclesJumped'] == 0
+@pytest.fixture(scope='module')
+def off(root, ft0):
+    """Five cycles without jumping."""
+    run = Oedometer(ft0=ft0, cycles=5, results=root, runId='off', packingDir=os.path.join(root, 'packings'),
+                    **SMALL, **FATIGUE)
+    run.run()
+    return run.out
+
+
+def files(folder):
+    out = {f: open(os.path.join(folder, f)).read() for f in ('fd.csv', 'checks.csv', 'events.csv')}
+    out['cycles'] = pd.read_csv(os.path.join(folder, 'cycles.csv')).iloc[:, :8]
+    return out
+
+
+def test_a_run_whose_jumps_are_never_allowed_is_the_run_without_jumping(root, ft0, off):
+    run = Oedometer(ft0=ft0, cycles=5, results=root, runId='never', packingDir=os.path.join(root, 'packings'),
+                    **SMALL, **FATIGUE, **dict(JUMP, jumpMaxDamage=1e-12))
+    s = run.run()
+    assert s['jumps'] == 0 and s['cyclesJumped'] == 0
+    out = {'off': files(off), 'never': files(run.out)}
     assert out['off']['cycles'].maxDamage.iloc[-1] > 0
     for f in ('fd.csv', 'checks.csv', 'events.csv'):
         assert out['off'][f] == out['never'][f], f
     pd.testing.assert_frame_equal(out['off']['cycles'], out['never']['cycles'], check_exact=True)
+
+
+def test_a_run_reopened_with_jumping_jumps_and_counts_on(root, off):
+    run = Oedometer.reopen(os.path.join(off, 'state-end.yade.gz'), results=root, runId='reopened', **JUMP)
+    s = run.load(9)
+    cyc = pd.read_csv(os.path.join(run.out, 'cycles.csv'))
+    assert s['cycles'] == 14 and cyc.cycle.iloc[-1] == 14 and s['jumps'] >= 1 and cyc.jumped.iloc[-1] > 0
+    assert list(cyc.cycle[:5]) == [1, 2, 3, 4, 5]
 
 
 def test_jumping_needs_fatigue():

@@ -233,6 +233,17 @@ class Experiment:
             O.engines = [runtime.callback(self, 'jumpNow', iterPeriod=1, dead=True, label=JUMPER)] + list(O.engines)
             self.adopt()
 
+    def syncJumping(self):
+        """At the start of a load(): jumping as the parameters now say (a run reopened may start, tune or stop it;
+        the cycles jumped stay counted). Returns True if jumping starts now."""
+        if self.jumper is None:
+            if self.p['jump']:
+                self.startJumping()
+                return True
+            return False
+        self.jumper.tune(self.p)
+        return False
+
     def cycleClosed(self, cycle, settlement, changed):
         """The experiment's call at the end of each simulated cycle (numbered with the jumped ones), with its
         permanent settlement [m] and whether a grain crushed or abraded in it: the jumper reads the grains' damage

@@ -63,11 +63,20 @@ class CycleJumper:
         self.jumped = 0           # cycles not simulated [cycles]
         self.extrapolated = 0.0   # settlement of the jumped cycles [m] as the last jump's law gave it
         self.pending = None       # the plan of the jump to make at the next step
+        self.on = True            # False: the cycles are read, no jump is planned (a run reopened without jump)
 
     @classmethod
     def of(cls, p):
         """The jumper of the parameters p, None without jump."""
         return cls(p['jumpWindow'], p['jumpSteady'], p['jumpMaxDamage'], p['jumpMargin']) if p['jump'] else None
+
+    def tune(self, p):
+        """The parameters p (checked) of a run reopened with other jump settings; jump off: no more jumps, the
+        cycles jumped stay counted."""
+        self.window, self.steady, self.maxDamage, self.margin = (int(p['jumpWindow']), p['jumpSteady'],
+                                                                 p['jumpMaxDamage'], int(p['jumpMargin']))
+        self.on = bool(p['jump'])
+        self.increments = self.increments[-self.window:]
 
     def cycleEnded(self, engine, ids, cycle, settlement, changed):
         """A simulated cycle `cycle` (numbered with the jumped ones) ended with the simulated permanent settlement
@@ -84,7 +93,7 @@ class CycleJumper:
         self.increments = (self.increments + [np.vstack([now - self.last, peaks[None, :]])])[-self.window:]
         self.last = now
         # the last cycle of a run is simulated: its end state is a real one
-        remaining = (self.target - cycle - 1) if self.target is not None else 0
+        remaining = (self.target - cycle - 1) if self.target is not None and self.on else 0
         if len(self.increments) < self.window or remaining < 1:
             return None
         inc = np.array(self.increments)                       # (window, 3, n)
@@ -129,7 +138,7 @@ class CycleJumper:
     # ------------------------------------------------------------------ saving
     def state(self):
         s = {k: getattr(self, k) for k in ('window', 'steady', 'maxDamage', 'margin', 'target', 'ids', 'direct',
-                                           'jumps', 'jumped', 'extrapolated')}
+                                           'jumps', 'jumped', 'extrapolated', 'on')}
         s['last'] = _pack(self.last)
         s['increments'] = [_pack(a) for a in self.increments]
         s['pending'] = None if self.pending is None else dict(
@@ -141,6 +150,7 @@ class CycleJumper:
         j = cls(s['window'], s['steady'], s['maxDamage'], s['margin'])
         for k in ('target', 'ids', 'direct', 'jumps', 'jumped', 'extrapolated'):
             setattr(j, k, s[k])
+        j.on = s.get('on', True)
         j.last = _unpack(s['last'])
         j.increments = [_unpack(a) for a in s['increments']]
         if s['pending'] is not None:

@@ -23,7 +23,7 @@ from yade.wrapper import FrictMat, InterpolatingDirectedForceEngine
 
 from ... import runtime
 from ...engines import BallastAbrasionEngine, BallastCrushEngine
-from ...params import ParamError, requireWritableDir, validate
+from ...params import CYCLE_JUMP, ParamError, requireWritableDir, validate
 from .. import chain, grains, preparation, timestep
 from ..base import Experiment
 from ..oedometer import scene
@@ -131,7 +131,8 @@ class BoxTest(Experiment):
 
     NAME = 'box'
     Parameters = BoxParameters
-    REOPEN_PARAMS = ('results', 'runId', 'progress', 'vtk', 'cycles', 'saveEvery', 'continueFrom')
+    # where and how it reports, and how its cycles are simulated (cycle jumping)
+    REOPEN_PARAMS = ('results', 'runId', 'progress', 'vtk', 'cycles', 'saveEvery', 'continueFrom') + tuple(CYCLE_JUMP)
 
     def __init__(self, parameters=None, **params):
         self.rig = self.recorder = self.jumper = None
@@ -280,6 +281,7 @@ class BoxTest(Experiment):
             self.dir.create()
             self.markRunning(continues=self.dir.previous)
             self.say('run %s goes on from %s -> %s' % (self.runId, self.dir.previous, self.out))
+        self.syncJumping()
         rec = self.recorder
         target = self.cyclesDone() + n
         tEnd = rec.t0 + (target - rec.jumped) * rec.period

@@ -34,7 +34,7 @@ from yade import O
 from ... import grading, runtime
 from ...geometry import sphereVolume
 from ...names import fmtTime
-from ...params import validate
+from ...params import CYCLE_JUMP, validate
 from ...study.files import writeAtomic
 from .. import chain, grains
 from .. import timestep
@@ -59,7 +59,7 @@ class Oedometer(Experiment):
     NAME = 'oedometer'
     Parameters = OedometerParameters
     # parameters a reopened run may change: where and how it reports, not the physics
-    REOPEN_PARAMS = ('results', 'runId', 'progress', 'vtk', 'saveEvery', 'timing', 'cycles')
+    REOPEN_PARAMS = ('results', 'runId', 'progress', 'vtk', 'saveEvery', 'timing', 'cycles') + tuple(CYCLE_JUMP)
 
     def __init__(self, packing=None, load=None, outputs=None, parameters=None, **params):
         self.packing = packing if packing is not None else StoredPacking()
@@ -115,6 +115,9 @@ class Oedometer(Experiment):
             if self.rig is None:
                 self.prepare()
             self.startLoading()
+        if self.syncJumping():   # a run reopened with jump
+            self.probe.jumper = self.jumper
+            self.readCycles()
         t0 = self.loading.t0
         done = math.floor((O.time - t0 + 0.5 * O.dt) / self.T) + self.cyclesJumped()
         total = done + cycles if cycles is not None else (p['cycles'] if done < p['cycles'] else done + 1)
@@ -135,6 +138,12 @@ class Oedometer(Experiment):
                           self.loading.force() / 1e3, self.loading.delta() * 1e3, self.counter('crush', 'nCrushed'),
                           self.counter('abrasion', 'nAbraded')) + self.outputs.inertialInfo())
         return self.finish()
+
+    def readCycles(self):
+        """The jumper's callback after outputs.cycleEnd, which closes the cycle's row, at the same steps."""
+        rows = chain.engine(self.outputs.CYCLES)
+        O.engines = O.engines + [runtime.callback(self, 'cycleEnded', virtPeriod=self.T, virtLast=rows.virtLast,
+                                                  label=JUMP_CYCLE)]
 
     def cyclesJumped(self):
         """Cycles advanced by cycle jumping, not simulated (0 without jump)."""
@@ -213,9 +222,8 @@ class Oedometer(Experiment):
         self.startJumping()
         self.probe = Probe(p, self.loading, self.rig, self.dir, self.initial, self.jumper)
         self.outputs.start(self.probe)
-        if self.jumper is not None:   # after outputs.cycleEnd, which closes the cycle's row
-            O.engines = O.engines + [runtime.callback(self, 'cycleEnded', virtPeriod=self.T, virtLast=O.time,
-                                                      label=JUMP_CYCLE)]
+        if self.jumper is not None:
+            self.readCycles()
         # containment at simulated times (the recorder's period): the same in every identical run
         O.engines = O.engines + [runtime.callback(self, 'checkContainment', virtPeriod=self.T / p['samples'],
                                                   label=CONTAINMENT)]
