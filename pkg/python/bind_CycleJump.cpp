@@ -1,4 +1,5 @@
 // Binding of CycleJump.hpp: the cycles a fatigue damage rate may be advanced over at once.
+#include <cmath>
 #include <string>
 
 #include "../CycleJump.hpp"
@@ -9,6 +10,8 @@ namespace ballast {
 namespace binding {
 
 namespace {
+	const double kMaxRemaining = 1e15;  // [cycles] far beyond any run, exact as a double and as a long
+
 	bp::tuple cycleJumpPlan(const bp::object& damage, const bp::object& peak, const bp::object& remaining,
 	                        const bp::object& window, const bp::object& steady, const bp::object& maxDamage,
 	                        const bp::object& margin)
@@ -16,8 +19,8 @@ namespace {
 		const CycleJumpParameters p = CycleJumpParameters::checked(asScalar(window, "window"), asScalar(steady, "steady"),
 		                                                           asScalar(maxDamage, "maxDamage"), asScalar(margin, "margin"));
 		const double left = asScalar(remaining, "remaining");
-		if (left < 0 || left != static_cast<double>(static_cast<long>(left)))
-			throw ArgumentError("remaining: expected an integer >= 0, got " + formatValue(left));
+		if (!(left >= 0 && left <= kMaxRemaining) || left != std::floor(left))  // a long holds it exactly
+			throw ArgumentError("remaining: expected an integer in [0, 1e15], got " + formatValue(left));
 		np::ndarray pk = asDoubles(peak, "peak");
 		const long  n  = requireShape(pk, "peak", {-1}, "a 1-d array");
 		np::ndarray D  = asDoubles(damage, "damage");

@@ -21,6 +21,7 @@ BY_FILE = {
     'BallastCrushEngine': {'crushCheck'},
     'Weibull': {'weibullFactors'},
     'Fatigue': {'fatigueCheck'},
+    'CycleJump': {'cycleJumpPlan'},
     'BallastAbrasionEngine': {'abrasionCheck', 'abrasionBound', 'sphereContactBound'},
     'FragmentPattern': {'fragmentPattern', 'keptVolumeFraction', 'patternName', 'randomRotation', 'placeFragments'},
     'InputCheck': {'parameterRanges'},

@@ -553,6 +553,47 @@ def matricesToArray(g):
     return kw, check
 
 
+def cycleJumpRef(D, peak, remaining, W, steady, maxDamage, margin):
+    """CycleJump.hpp's bounds, written again: (cycles, limit, grain, maxRate, rate)."""
+    h, best, limit, grain = W // 2, float(remaining), 'remaining', -1
+    rate = (D[W] - D[0]) / W
+    for k, r in enumerate(rate):
+        if r <= 0:
+            continue
+        a, b = (D[h, k] - D[0, k]) / h, (D[W, k] - D[h, k]) / (W - h)
+        bounds = [(math.floor(maxDamage / r), 'maxDamage')]
+        if a != b:
+            bounds.append((math.floor(steady * maxDamage / abs(b - a)), 'steady'))
+        bounds.append((math.floor((1.0 - peak[k] - D[W, k]) / r) - margin, 'failure'))
+        for c, name in bounds:
+            if c < best:
+                best, limit, grain = max(c, 0.0), name, k
+    return int(best), limit, grain, max([0.0] + list(rate)), rate
+
+
+def cycleJumpPlan(g):
+    W, n = int(g.rng.integers(2, 6)), int(g.rng.integers(0, 5))
+    inc = g.rng.uniform(0, 0.02, (W, n)) * (g.rng.random((W, n)) < 0.7)
+    D = np.vstack([g.rng.uniform(0, 0.5, (1, n)) * (g.rng.random(n) < 0.5), inc]).cumsum(axis=0)
+    peak = np.where(D[-1] > D[0], g.rng.uniform(0.3, 1.0, n), g.rng.uniform(0, 1.0, n) * (g.rng.random(n) < 0.5))
+    kw = dict(damage=g.array(D), peak=g.array(peak), remaining=g.number(float(g.rng.integers(0, 10 ** 6))),
+              window=g.number(float(W)), steady=g.number(g.rng.uniform(0.01, 1)),
+              maxDamage=g.number(g.rng.uniform(0.001, 0.99)), margin=g.number(float(g.rng.integers(0, 4))))
+
+    def check(out):
+        cycles, limit, grain, maxRate, rate = out
+        args = [asFloat(kw[k]) for k in ('damage', 'peak', 'remaining', 'window', 'steady', 'maxDamage', 'margin')]
+        Dx, pk = args[0], args[1]
+        if Dx.shape != (W + 1, n) or not moderate(Dx, pk):
+            return False
+        want = cycleJumpRef(Dx, pk, float(args[2]), W, float(args[4]), float(args[5]), float(args[6]))
+        assert (cycles, limit, grain) == want[:3] and rate.shape == (n,)
+        close(rate, want[4], atol=1e-300)
+        assert maxRate == pytest.approx(want[3], rel=1e-12, abs=1e-300)
+        return True
+    return kw, check
+
+
 def fastMatrixPath(g):
     kw = dict(item=g.pick([g.array(g.signed((3, 3))), g.pick(GARBAGE), g.number(1.0)]))
 
@@ -570,7 +611,8 @@ FUNCTIONS = {'fabricStress': fabricStress, 'grainStresses': grainStresses, 'vonM
              'abrasionBound': abrasionBound, 'sphereContactBound': sphereContactBound, 'fragmentPattern': fragmentPattern,
              'keptVolumeFraction': keptVolumeFraction, 'patternName': patternName, 'randomRotation': randomRotation,
              'placeFragments': placeFragments, 'matricesToArray': matricesToArray, '_fastMatrixPath': fastMatrixPath,
-             'pWaveStep': pWaveStep, 'densityScaling': densityScaling, 'inertialNumber': inertialNumber}
+             'pWaveStep': pWaveStep, 'densityScaling': densityScaling, 'inertialNumber': inertialNumber,
+             'cycleJumpPlan': cycleJumpPlan}
 
 
 # functions without arguments: nothing to fuzz (tests/python/test__ballast_InputCheck.py, _CrushCriterion.py)

@@ -153,6 +153,7 @@ def test_an_experiment_that_names_its_record_files_gets_them_whole(tmp_path):
     files = {'summary.json': json.dumps({'settlement': 1e-4, 'params': {'seed': 1}}), 'row.json': '{}',
              'cycles.csv': 'cycle,settlement\n1,1e-4\n', 'grading.csv': 'cycle,Bg\n0,0\n', 'zones.csv': 'under\n0\n',
              'crushes.csv': 't,cycle,x,zone\n0.1,1,0.0,under\n', 'samples.csv': 't,F\n0,3000\n', 'fd.csv': 'x\n',
+             'jumps.csv': 'jump,cycle\n1,12\n', 'state-jump0001-after.yade.gz': 'a state after a jump',
              'state-end.yade.gz': 'the end state', 'state-start.yade.gz': 'the start state'}
     for name, text in files.items():
         (run / name).write_text(text)
