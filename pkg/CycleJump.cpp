@@ -8,34 +8,40 @@
 
 namespace ballast {
 
-CycleJumpParameters CycleJumpParameters::checked(double window, double steady, double maxDamage, double margin)
+CycleJumpParameters CycleJumpParameters::checked(double window, double steady, double maxDamage, double margin,
+                                                 double growth, double endurance)
 {
 	// braces: checked in the order written
 	return CycleJumpParameters{static_cast<long>(requireInRange(ranges::jumpWindow, "window", window)),
 	                           requireInRange(ranges::jumpSteady, "steady", steady),
 	                           requireInRange(ranges::jumpMaxDamage, "maxDamage", maxDamage),
-	                           static_cast<long>(requireInRange(ranges::jumpMargin, "margin", margin))};
+	                           static_cast<long>(requireInRange(ranges::jumpMargin, "margin", margin)),
+	                           requireInRange(ranges::jumpGrowth, "growth", growth),
+	                           requireInRange(ranges::fatigueEndurance, "endurance", endurance)};
 }
 
 const char* jumpLimitName(JumpLimit limit)
 {
 	switch (limit) {
 		case JumpLimit::remaining: return "remaining";
+		case JumpLimit::growth: return "growth";
 		case JumpLimit::maxDamage: return "maxDamage";
 		case JumpLimit::steady: return "steady";
+		case JumpLimit::endurance: return "endurance";
 		case JumpLimit::failure: return "failure";
 	}
 	return "?";
 }
 
-JumpPlan planJump(const CycleJumpParameters& p, long n, const double* damage, const double* peak, long remaining,
-                  double* rate)
+JumpPlan planJump(const CycleJumpParameters& p, long n, const double* damage, const double* peaks, long cycle,
+                  long remaining, double* rate)
 {
 	if (n < 0) throw ArgumentError("n: expected >= 0 grains, got " + std::to_string(n));
+	if (cycle < 1) throw ArgumentError("cycle: expected >= 1, got " + std::to_string(cycle));
 	if (remaining < 0) throw ArgumentError("remaining: expected >= 0 cycles, got " + std::to_string(remaining));
 	const long W = p.window, h = W / 2;
 	for (long g = 0; g < n; ++g) {
-		requireNonNegative("peak", g, peak[g]);
+		for (long k = 0; k < W; ++k) requireNonNegative("peaks", k * n + g, peaks[k * n + g]);
 		for (long k = 0; k <= W; ++k) {
 			requireNonNegative("damage", k * n + g, damage[k * n + g]);
 			if (k > 0 && damage[k * n + g] < damage[(k - 1) * n + g])
@@ -53,19 +59,27 @@ JumpPlan planJump(const CycleJumpParameters& p, long n, const double* damage, co
                         plan.grain = g;
                 }
 	};
+	bound(std::floor(p.growth * static_cast<double>(cycle)), JumpLimit::growth, -1);
 	for (long g = 0; g < n; ++g) {
 		const double D0 = damage[g], Dh = damage[h * n + g], DW = damage[W * n + g];
 		const double r = (DW - D0) / W, a = (Dh - D0) / h, b = (DW - Dh) / (W - h);
-		rate[g]        = r;
-		plan.maxRate   = std::max(plan.maxRate, r);
+		double       sMax = 0, first = 0, second = 0;
+		for (long k = 0; k < W; ++k) {
+			sMax = std::max(sMax, peaks[k * n + g]);
+			(k < h ? first : second) += peaks[k * n + g];
+		}
+		// the halves' centres lie W / 2 cycles apart
+		const double drift = (second / (W - h) - first / h) / (0.5 * W);
+		rate[g]            = r;
+		plan.maxRate       = std::max(plan.maxRate, r);
+		if (sMax < p.endurance && drift > 0) bound(std::floor((p.endurance - sMax) / drift), JumpLimit::endurance, g);
 		if (r <= 0) continue;  // no damage in the window: nothing to extrapolate for this grain
-		if (peak[g] <= 0)
-			throw ArgumentError("peak[" + std::to_string(g) + "]: a grain whose damage grew has a damaging peak > 0, got "
-			                    + formatValue(peak[g]));
+		if (sMax <= 0)
+			throw ArgumentError("peaks: grain " + std::to_string(g) + "'s damage grew in the window, but its peaks are 0");
 		bound(std::floor(p.maxDamage / r), JumpLimit::maxDamage, g);
 		if (a != b) bound(std::floor(p.steady * p.maxDamage / std::fabs(b - a)), JumpLimit::steady, g);
 		// fails in the first cycle after m more peaks with DW + m r > 1 - s_p (Fatigue.hpp's crush rule)
-		bound(std::floor((1.0 - peak[g] - DW) / r) - p.margin, JumpLimit::failure, g);
+		bound(std::floor((1.0 - sMax - DW) / r) - p.margin, JumpLimit::failure, g);
 	}
 	plan.cycles = static_cast<long>(best);
 	return plan;

@@ -1,40 +1,47 @@
 // Cycle jumping (docs/cycles.md): many load cycles of fatigue damage advanced at once, as fatigue analyses of
 // structures do, where the directly simulated cycles show a steady damage rate. Over the last `window`
 // directly simulated cycles each grain's damage D (Fatigue.hpp) grew at the rate r = (D_W - D_0) / W per
-// cycle; the rates of the window's two halves, a and b, tell how steady it is. The jump DN is the largest
-// number of cycles for which
+// cycle; the rates of the window's two halves, a and b, tell how steady it is. s_p is a grain's largest
+// stress ratio s = sigma_e / f_t in the window and d the drift of its peaks per cycle (the mean peak of the
+// second half less that of the first, over W / 2 cycles). The jump DN is the largest number of cycles for which
+//   DN              <= growth N             the count N grows by at most that factor: cycles are simulated
+//                                           again in every stretch of log N, where the bed may change
 //   DN r            <= maxDamage            no grain's damage changes by more than maxDamage
 //   DN |b - a|      <= steady maxDamage     the extrapolation of each grain is uncertain by at most that
+//   s_p + DN d      <= endurance            no grain below the endurance ratio drifts up into damage unseen
 //   D + (DN + margin) r <= 1 - s_p          no grain fails inside the jump (eq. 1 with f_t (1 - D) at its
-//                                           largest damaging peak s_p of the window), and `margin` cycles
-//                                           before the failing one are simulated again
+//                                           largest ratio s_p of the window), and `margin` cycles before the
+//                                           failing one are simulated again
 //   DN              <= remaining            the run's cycles
 // Crushes are never extrapolated: the cycle a grain fails in is always simulated. No YADE here.
 #pragma once
 
 namespace ballast {
 
-// The parameters, each within its range (InputCheck.hpp: jumpWindow, jumpSteady, jumpMaxDamage, jumpMargin):
-// `checked` is the only way to build them.
+// The parameters, each within its range (InputCheck.hpp: jumpWindow, jumpSteady, jumpMaxDamage, jumpMargin,
+// jumpGrowth, and fatigueEndurance): `checked` is the only way to build them.
 class CycleJumpParameters {
 public:
 	const long   window;     // directly simulated cycles whose damage gives the rate [cycles]
 	const double steady;     // allowed uncertainty of a jump's damage, as a fraction of maxDamage [-]
 	const double maxDamage;  // largest change of any grain's damage in one jump [-]
 	const long   margin;     // simulated cycles left before the first cycle a grain is predicted to fail in [cycles]
+	const double growth;     // largest jump as a multiple of the cycles counted so far [-]
+	const double endurance;  // the fatigue law's endurance ratio: peaks below it do no damage [-]
 
 	// ArgumentError naming the first parameter out of its range, in the order of the arguments.
-	static CycleJumpParameters checked(double window, double steady, double maxDamage, double margin);
+	static CycleJumpParameters checked(double window, double steady, double maxDamage, double margin, double growth,
+	                                   double endurance);
 
 private:
-	CycleJumpParameters(long window_, double steady_, double maxDamage_, long margin_)
-	        : window(window_), steady(steady_), maxDamage(maxDamage_), margin(margin_)
+	CycleJumpParameters(long window_, double steady_, double maxDamage_, long margin_, double growth_, double endurance_)
+	        : window(window_), steady(steady_), maxDamage(maxDamage_), margin(margin_), growth(growth_), endurance(endurance_)
 	{
 	}
 };
 
 // What bounds a jump, in the order the bounds are tested (the first of equal bounds is named).
-enum class JumpLimit { remaining = 0, maxDamage = 1, steady = 2, failure = 3 };
+enum class JumpLimit { remaining = 0, growth = 1, maxDamage = 2, steady = 3, endurance = 4, failure = 5 };
 const char* jumpLimitName(JumpLimit limit);
 
 struct JumpPlan {
@@ -45,10 +52,11 @@ struct JumpPlan {
 };
 
 // n grains; damage: (window + 1) x n, row-major, row k the damage of every grain at the end of the k-th of
-// the window's cycles (row 0 where the window starts: finite, >= 0, never falling along a column); peak: n,
-// each grain's largest damaging peak of s in the window (finite, >= 0; > 0 where its damage grew); remaining
-// (>= 0) cycles left. Writes each grain's rate r to rate (n).
-JumpPlan planJump(const CycleJumpParameters& p, long n, const double* damage, const double* peak, long remaining,
-                  double* rate);
+// the window's cycles (row 0 where the window starts: finite, >= 0, never falling along a column); peaks:
+// window x n, each grain's largest s in each of the window's cycles (finite, >= 0; some > 0 where its damage
+// grew); cycle (>= 1) the count N at the window's end; remaining (>= 0) cycles left. Writes each grain's rate r
+// to rate (n).
+JumpPlan planJump(const CycleJumpParameters& p, long n, const double* damage, const double* peaks, long cycle,
+                  long remaining, double* rate);
 
 }  // namespace ballast

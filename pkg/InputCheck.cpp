@@ -97,6 +97,7 @@ namespace ranges {
 	const ParameterRange jumpSteady{"jumpSteady", 0, 1, false, true, false, false, "a number in (0, 1]"};
 	const ParameterRange jumpMaxDamage{"jumpMaxDamage", 0, 1, false, false, false, false, "a number in (0, 1)"};
 	const ParameterRange jumpMargin{"jumpMargin", 0, 10000, true, true, true, false, "an integer in [0, 10000]"};
+	const ParameterRange jumpGrowth{"jumpGrowth", 0, 1000, false, true, false, false, "a number in (0, 1000]"};
 }  // namespace ranges
 
 const std::vector<const ParameterRange*>& parameterRanges()
@@ -104,7 +105,7 @@ const std::vector<const ParameterRange*>& parameterRanges()
 	static const std::vector<const ParameterRange*> all = {
 	        &ranges::ft0,  &ranges::m, &ranges::rMin, &ranges::seed, &ranges::weibullModulus, &ranges::fatigueExponent,
 	        &ranges::fatigueEndurance, &ranges::fatigueHysteresis, &ranges::strength, &ranges::jumpWindow, &ranges::jumpSteady,
-	        &ranges::jumpMaxDamage, &ranges::jumpMargin};
+	        &ranges::jumpMaxDamage, &ranges::jumpMargin, &ranges::jumpGrowth};
 	return all;
 }
 

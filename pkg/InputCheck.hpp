@@ -63,6 +63,7 @@ namespace ranges {
 	extern const ParameterRange jumpSteady;         // [-]
 	extern const ParameterRange jumpMaxDamage;      // [-]
 	extern const ParameterRange jumpMargin;         // [cycles]
+	extern const ParameterRange jumpGrowth;         // [-]
 }  // namespace ranges
 
 // Every range above, in the order of the list.

@@ -10,25 +10,36 @@ namespace ballast {
 namespace binding {
 
 namespace {
-	const double kMaxRemaining = 1e15;  // [cycles] far beyond any run, exact as a double and as a long
+	const double kMaxCycles = 1e15;  // [cycles] far beyond any run, exact as a double and as a long
 
-	bp::tuple cycleJumpPlan(const bp::object& damage, const bp::object& peak, const bp::object& remaining,
-	                        const bp::object& window, const bp::object& steady, const bp::object& maxDamage,
-	                        const bp::object& margin)
+	long asCycles(const bp::object& obj, const std::string& name, double lowest)
 	{
-		const CycleJumpParameters p = CycleJumpParameters::checked(asScalar(window, "window"), asScalar(steady, "steady"),
-		                                                           asScalar(maxDamage, "maxDamage"), asScalar(margin, "margin"));
-		const double left = asScalar(remaining, "remaining");
-		if (!(left >= 0 && left <= kMaxRemaining) || left != std::floor(left))  // a long holds it exactly
-			throw ArgumentError("remaining: expected an integer in [0, 1e15], got " + formatValue(left));
-		np::ndarray pk = asDoubles(peak, "peak");
-		const long  n  = requireShape(pk, "peak", {-1}, "a 1-d array");
-		np::ndarray D  = asDoubles(damage, "damage");
-		requireShape(D, "damage", {p.window + 1, n},
-		             "a (" + std::to_string(p.window + 1) + "," + std::to_string(n) + ") array: the damage of each grain "
-		             "at the end of each of the window's cycles and before them");
+		const double v = asScalar(obj, name);
+		if (!(v >= lowest && v <= kMaxCycles) || v != std::floor(v))  // a long holds it exactly
+			throw ArgumentError(name + ": expected an integer in [" + formatValue(lowest) + ", 1e15], got " + formatValue(v));
+		return static_cast<long>(v);
+	}
+
+	bp::tuple cycleJumpPlan(const bp::object& damage, const bp::object& peaks, const bp::object& cycle,
+	                        const bp::object& remaining, const bp::object& window, const bp::object& steady,
+	                        const bp::object& maxDamage, const bp::object& margin, const bp::object& growth,
+	                        const bp::object& endurance)
+	{
+		const CycleJumpParameters p = CycleJumpParameters::checked(
+		        asScalar(window, "window"), asScalar(steady, "steady"), asScalar(maxDamage, "maxDamage"),
+		        asScalar(margin, "margin"), asScalar(growth, "growth"), asScalar(endurance, "endurance"));
+		const long  N = asCycles(cycle, "cycle", 1), left = asCycles(remaining, "remaining", 0);
+		np::ndarray D = asDoubles(damage, "damage");
+		requireShape(D, "damage", {p.window + 1, -1},
+		                                "a (" + std::to_string(p.window + 1) + ",N) array: the damage of each grain at the "
+		                                "start of the window and at the end of each of its cycles");
+		const long n = static_cast<long>(D.shape(1));
+		np::ndarray s = asDoubles(peaks, "peaks");
+		requireShape(s, "peaks", {p.window, n},
+		             "a (" + std::to_string(p.window) + "," + std::to_string(n) + ") array: each grain's largest stress "
+		             "ratio in each of the window's cycles");
 		np::ndarray    rate = emptyDoubles({n});
-		const JumpPlan plan = planJump(p, n, dptr(D), dptr(pk), static_cast<long>(left), wptr(rate));
+		const JumpPlan plan = planJump(p, n, dptr(D), dptr(s), N, left, wptr(rate));
 		return bp::make_tuple(plan.cycles, jumpLimitName(plan.limit), plan.grain, plan.maxRate, rate);
 	}
 }  // namespace
@@ -36,12 +47,13 @@ namespace {
 void registerCycleJump()
 {
 	bp::def("cycleJumpPlan", cycleJumpPlan,
-	        (bp::arg("damage"), "peak", "remaining", "window", "steady", "maxDamage", "margin"),
-	        "Cycle jumping (docs/cycles.md): damage (window+1, N) [-], each grain's fatigue damage at the start and the\n"
-	        "end of each of the last `window` simulated cycles, oldest first; peak (N,) [-] each grain's largest damaging\n"
-	        "peak of sigma_e / f_t in them; remaining [cycles]. Returns (DN [cycles], what bounds it: 'remaining',\n"
-	        "'maxDamage', 'steady' or 'failure', the bounding grain's index (-1 for remaining), the largest rate [1/cycle],\n"
-	        "the rate of each grain (N,) [1/cycle]).");
+	        (bp::arg("damage"), "peaks", "cycle", "remaining", "window", "steady", "maxDamage", "margin", "growth",
+	         "endurance"),
+	        "Cycle jumping (docs/cycles.md): damage (window+1, N) [-], each grain's fatigue damage at the start of the last\n"
+	        "`window` simulated cycles and at the end of each; peaks (window, N) [-], each grain's largest sigma_e / f_t in\n"
+	        "each of them; cycle [cycles], the count at the window's end; remaining [cycles]. Returns (DN [cycles], what\n"
+	        "bounds it: 'remaining', 'growth', 'maxDamage', 'steady', 'endurance' or 'failure', the bounding grain's index\n"
+	        "(-1 for remaining and growth), the largest rate [1/cycle], the rate of each grain (N,) [1/cycle]).");
 }
 
 }  // namespace binding

@@ -313,7 +313,12 @@ CYCLE_JUMP = {
     'jumpMaxDamage': Param(0.05, '-', 'no grain\'s damage D may grow by more than this in one jump',
                            *coreRange('jumpMaxDamage')),
     'jumpMargin': Param(1, 'cycles', 'simulated cycles left between the end of a jump and the cycle in which the first '
-                        'grain is predicted to fail (at its largest damaging peak of the window)', *coreRange('jumpMargin')),
+                        'grain is predicted to fail (at its largest stress ratio of the window)', *coreRange('jumpMargin')),
+    'jumpGrowth': Param(1.0, '-', 'a jump takes the cycle count N to at most (1 + jumpGrowth) N: cycles are simulated '
+                        'again in every stretch of log N, where the bed may change (1: at most doubling)',
+                        *coreRange('jumpGrowth')),
+    'jumpAfter': Param(0, 'cycles', 'no jump before this cycle: the cycles a bed needs to shake down, simulated',
+                       intBetween(0, 10 ** 9), 'an integer in [0, 10^9]'),
 }
 
 

@@ -16,9 +16,12 @@ using ballast_test::messageOf;
 
 namespace {
 
-CycleJumpParameters params(long window = 4, double steady = 0.1, double maxDamage = 1.0 - 1e-9, long margin = 0)
+const long kFar = 1000000;  // [cycles] a count whose growth bound never binds here
+
+CycleJumpParameters params(long window = 4, double steady = 0.1, double maxDamage = 1.0 - 1e-9, long margin = 0,
+                           double growth = 1000, double endurance = 0.5)
 {
-	return CycleJumpParameters::checked(window, steady, maxDamage, margin);
+	return CycleJumpParameters::checked(window, steady, maxDamage, margin, growth, endurance);
 }
 
 // One grain's damage over a window of W cycles growing by `rate` a cycle from D0.
@@ -29,11 +32,20 @@ std::vector<double> linear(long W, double D0, double rate)
 	return D;
 }
 
-JumpPlan plan(const CycleJumpParameters& p, const std::vector<double>& damage, const std::vector<double>& peak,
-              long remaining, std::vector<double>* rates = nullptr)
+// W cycles of peaks, the same for every cycle: one value per grain.
+std::vector<double> steadyPeaks(long W, const std::vector<double>& perGrain)
 {
-	std::vector<double> r(peak.size());
-	JumpPlan            out = planJump(p, static_cast<long>(peak.size()), damage.data(), peak.data(), remaining, r.data());
+	std::vector<double> s;
+	for (long k = 0; k < W; ++k) s.insert(s.end(), perGrain.begin(), perGrain.end());
+	return s;
+}
+
+JumpPlan plan(const CycleJumpParameters& p, const std::vector<double>& damage, const std::vector<double>& peaks,
+              long cycle, long remaining, std::vector<double>* rates = nullptr)
+{
+	const long          n = static_cast<long>(damage.size()) / (p.window + 1);
+	std::vector<double> r(n);
+	JumpPlan            out = planJump(p, n, damage.data(), peaks.data(), cycle, remaining, r.data());
 	if (rates) *rates = r;
 	return out;
 }
@@ -45,13 +57,17 @@ TEST(CycleJump, FailureBoundsTheJumpAtTheLastCycleTheGrainSurvives)
 	// s_p = 0.6, b = 8: r = 0.4 0.6^8 = 0.00671846 a cycle. After a window of 4 cycles D = 4 r; the grain fails
 	// in the first cycle after m more peaks with 4 r + m r > 0.4, m = floor(0.4 / r - 4) = floor(55.54) = 55
 	const double r = 0.4 * std::pow(0.6, 8);
-	JumpPlan     j = plan(params(), linear(4, 0, r), {0.6}, 100000);
+	JumpPlan     j = plan(params(), linear(4, 0, r), steadyPeaks(4, {0.6}), kFar, 100000);
 	EXPECT_EQ(j.cycles, 55);
 	EXPECT_EQ(j.limit, JumpLimit::failure);
 	EXPECT_EQ(j.grain, 0);
 	EXPECT_DOUBLE_EQ(j.maxRate, r);
 	// a margin of 3 cycles leaves 3 more simulated before the failing one
-	EXPECT_EQ(plan(params(4, 0.1, 1.0 - 1e-9, 3), linear(4, 0, r), {0.6}, 100000).cycles, 52);
+	EXPECT_EQ(plan(params(4, 0.1, 1.0 - 1e-9, 3), linear(4, 0, r), steadyPeaks(4, {0.6}), kFar, 100000).cycles, 52);
+	// the largest peak of the window counts: one cycle at 0.7 leaves floor((1 - 0.7 - 4 r) / r) = 40
+	std::vector<double> s = steadyPeaks(4, {0.6});
+	s[2]                  = 0.7;
+	EXPECT_EQ(plan(params(), linear(4, 0, r), s, kFar, 100000).cycles, 40);
 }
 
 TEST(CycleJump, TheJumpedGrainCrushesInTheCycleItCrushesInWithoutTheJump)
@@ -62,21 +78,24 @@ TEST(CycleJump, TheJumpedGrainCrushesInTheCycleItCrushesInWithoutTheJump)
 	const double            kPi = std::acos(-1.0), radius = 0.02;
 	for (long margin : {0L, 1L, 5L}) {
 		GrainFatigue        g;
-		std::vector<double> window{0.0};
+		std::vector<double> window{0.0}, peaks;
 		long                cycle = 0, crushed = 0;
 		bool                jumped = false;
 		while (!crushed && cycle < 200) {
 			++cycle;
+			double top = 0;
 			for (int k = 0; k < 20 && !crushed; ++k) {
 				const double  s = 0.6 * (1 - std::cos(2 * kPi * k / 20)) / 2;
 				unsigned char c;
+				top = std::max(top, s);
 				evaluateFatigue(f, 1, &s, &radius, &g, &c);
 				if (c) crushed = cycle;
 			}
 			window.push_back(g.damage);
+			peaks.push_back(top);
 			if (!jumped && window.size() == 5) {
 				std::vector<double> rate;
-				const JumpPlan      j = plan(params(4, 0.1, 1.0 - 1e-9, margin), window, {0.6}, 1000, &rate);
+				const JumpPlan      j = plan(params(4, 0.1, 1.0 - 1e-9, margin), window, peaks, cycle, 1000, &rate);
 				g.damage += j.cycles * rate[0];
 				cycle += j.cycles;
 				jumped = true;
@@ -90,7 +109,7 @@ TEST(CycleJump, TheJumpedGrainCrushesInTheCycleItCrushesInWithoutTheJump)
 TEST(CycleJump, NoGrainsDamageMovesByMoreThanMaxDamage)
 {
 	// r = 0.001 a cycle far from failure (s_p 0.55): maxDamage 0.05 allows 50 cycles
-	JumpPlan j = plan(params(4, 0.1, 0.05), linear(4, 0, 0.001), {0.55}, 100000);
+	JumpPlan j = plan(params(4, 0.1, 0.05), linear(4, 0, 0.001), steadyPeaks(4, {0.55}), kFar, 100000);
 	EXPECT_EQ(j.cycles, 50);
 	EXPECT_EQ(j.limit, JumpLimit::maxDamage);
 	// the fastest grain bounds it: two grains, rates 0.001 and 0.004, interleaved per cycle
@@ -99,7 +118,7 @@ TEST(CycleJump, NoGrainsDamageMovesByMoreThanMaxDamage)
 		D.push_back(0.001 * k);
 		D.push_back(0.004 * k);
 	}
-	j = plan(params(4, 0.1, 0.05), D, {0.55, 0.55}, 100000);
+	j = plan(params(4, 0.1, 0.05), D, steadyPeaks(4, {0.55, 0.55}), kFar, 100000);
 	EXPECT_EQ(j.cycles, 12);  // floor(0.05 / 0.004)
 	EXPECT_EQ(j.grain, 1);
 }
@@ -110,47 +129,83 @@ TEST(CycleJump, AnUnsteadyRateShortensTheJump)
 	// 0.05 allows 0.005 / 0.001 = 5 cycles (maxDamage alone would allow floor(0.05 / 0.0015) = 33)
 	std::vector<double> D{0, 0.001, 0.002, 0.004, 0.006};
 	std::vector<double> rate;
-	JumpPlan            j = plan(params(4, 0.1, 0.05), D, {0.55}, 100000, &rate);
+	JumpPlan            j = plan(params(4, 0.1, 0.05), D, steadyPeaks(4, {0.55}), kFar, 100000, &rate);
 	EXPECT_EQ(j.cycles, 5);
 	EXPECT_EQ(j.limit, JumpLimit::steady);
 	EXPECT_DOUBLE_EQ(rate[0], 0.0015);
 	// odd windows: halves of 2 and 3 cycles (W = 5, h = 2): 0.001 then 0.001: steady
-	EXPECT_EQ(plan(params(5, 0.1, 0.05), linear(5, 0, 0.001), {0.55}, 100000).limit, JumpLimit::maxDamage);
+	EXPECT_EQ(plan(params(5, 0.1, 0.05), linear(5, 0, 0.001), steadyPeaks(5, {0.55}), kFar, 100000).limit,
+	          JumpLimit::maxDamage);
+}
+
+TEST(CycleJump, AGrainDriftingUpTowardsTheEnduranceRatioBoundsTheJump)
+{
+	// no damage; peaks 0.40, 0.40, 0.42, 0.42 (W = 4): the halves' means differ by 0.02 over 2 cycles, d = 0.01 a
+	// cycle; from its largest peak 0.42 it reaches the endurance ratio 0.5 after floor(0.08 / 0.01) = 7 cycles
+	// (a rounding below 8 of the doubles: 0.08 / 0.01 = 7.9999...)
+	std::vector<double> s{0.40, 0.40, 0.42, 0.42};
+	JumpPlan            j = plan(params(), std::vector<double>(5, 0.0), s, kFar, 100000);
+	EXPECT_EQ(j.limit, JumpLimit::endurance);
+	EXPECT_EQ(j.cycles, static_cast<long>(std::floor((0.5 - 0.42) / ((0.42 - 0.40) / 2.0))));
+	EXPECT_GE(j.cycles, 7);
+	EXPECT_LE(j.cycles, 8);
+	// falling or flat peaks, or peaks above the endurance ratio, do not bound it
+	EXPECT_EQ(plan(params(), std::vector<double>(5, 0.0), {0.42, 0.42, 0.40, 0.40}, kFar, 777).limit, JumpLimit::remaining);
+}
+
+TEST(CycleJump, TheCountGrowsByAtMostTheGrowthFactor)
+{
+	// no damage, cycle 30, growth 1: at most 30 more (the count at most doubles); growth 0.5: 15
+	EXPECT_EQ(plan(params(4, 0.1, 0.05, 0, 1.0), std::vector<double>(5, 0.0), steadyPeaks(4, {0.1}), 30, 1000).cycles, 30);
+	const JumpPlan j = plan(params(4, 0.1, 0.05, 0, 0.5), std::vector<double>(5, 0.0), steadyPeaks(4, {0.1}), 30, 1000);
+	EXPECT_EQ(j.cycles, 15);
+	EXPECT_EQ(j.limit, JumpLimit::growth);
+	EXPECT_EQ(j.grain, -1);
 }
 
 TEST(CycleJump, NoDamageJumpsToTheEndOfTheRun)
 {
-	JumpPlan j = plan(params(), std::vector<double>(10, 0.0), {0.0, 0.3}, 777);
+	JumpPlan j = plan(params(), std::vector<double>(10, 0.0), steadyPeaks(4, {0.0, 0.3}), kFar, 777);
 	EXPECT_EQ(j.cycles, 777);
 	EXPECT_EQ(j.limit, JumpLimit::remaining);
 	EXPECT_EQ(j.grain, -1);
 	EXPECT_EQ(j.maxRate, 0.0);
 	// and a tiny rate does not overflow the count
-	EXPECT_EQ(plan(params(), linear(4, 0, 1e-300), {0.6}, 123456789).cycles, 123456789);
+	EXPECT_EQ(plan(params(), linear(4, 0, 1e-300), steadyPeaks(4, {0.6}), 1000000000000L, 123456789).cycles, 123456789);
 }
 
 TEST(CycleJump, AGrainAlreadyPastItsFailureAllowsNoJump)
 {
 	// D = 0.45 > 1 - 0.6: it crushes at its next peak of 0.6
-	JumpPlan j = plan(params(), linear(4, 0.41, 0.01), {0.6}, 1000);
+	JumpPlan j = plan(params(), linear(4, 0.41, 0.01), steadyPeaks(4, {0.6}), kFar, 1000);
 	EXPECT_EQ(j.cycles, 0);
 	EXPECT_EQ(j.limit, JumpLimit::failure);
 }
 
 TEST(CycleJump, BadInputIsRefusedNamingIt)
 {
-	EXPECT_EQ(messageOf([] { CycleJumpParameters::checked(1, 0.1, 0.05, 0); }), "window: expected an integer in [2, 10000], got 1");
-	EXPECT_EQ(messageOf([] { CycleJumpParameters::checked(4.5, 0.1, 0.05, 0); }),
+	EXPECT_EQ(messageOf([] { CycleJumpParameters::checked(1, 0.1, 0.05, 0, 1, 0.5); }),
+	          "window: expected an integer in [2, 10000], got 1");
+	EXPECT_EQ(messageOf([] { CycleJumpParameters::checked(4.5, 0.1, 0.05, 0, 1, 0.5); }),
 	          "window: expected an integer in [2, 10000], got 4.5");
-	EXPECT_EQ(messageOf([] { CycleJumpParameters::checked(4, 0, 0.05, 0); }), "steady: expected a number in (0, 1], got 0");
-	EXPECT_EQ(messageOf([] { CycleJumpParameters::checked(4, 0.1, 1, 0); }), "maxDamage: expected a number in (0, 1), got 1");
-	EXPECT_EQ(messageOf([] { CycleJumpParameters::checked(4, 0.1, 0.05, -1); }),
+	EXPECT_EQ(messageOf([] { CycleJumpParameters::checked(4, 0, 0.05, 0, 1, 0.5); }), "steady: expected a number in (0, 1], got 0");
+	EXPECT_EQ(messageOf([] { CycleJumpParameters::checked(4, 0.1, 1, 0, 1, 0.5); }),
+	          "maxDamage: expected a number in (0, 1), got 1");
+	EXPECT_EQ(messageOf([] { CycleJumpParameters::checked(4, 0.1, 0.05, -1, 1, 0.5); }),
 	          "margin: expected an integer in [0, 10000], got -1");
+	EXPECT_EQ(messageOf([] { CycleJumpParameters::checked(4, 0.1, 0.05, 0, 0, 0.5); }),
+	          "growth: expected a number in (0, 1000], got 0");
+	EXPECT_EQ(messageOf([] { CycleJumpParameters::checked(4, 0.1, 0.05, 0, 1, 1); }),
+	          "endurance: expected a number in [0, 1), got 1");
 	const std::vector<double> falling{0, 0.01, 0.02, 0.005, 0.03};
-	EXPECT_EQ(messageOf([&] { plan(params(), falling, {0.6}, 10); }).rfind("damage: grain 0's damage falls from 0.02 to 0.005", 0),
+	EXPECT_EQ(messageOf([&] { plan(params(), falling, steadyPeaks(4, {0.6}), kFar, 10); })
+	                  .rfind("damage: grain 0's damage falls from 0.02 to 0.005", 0),
 	          0u);
-	EXPECT_EQ(messageOf([&] { plan(params(), linear(4, 0, 0.01), {0.0}, 10); }),
-	          "peak[0]: a grain whose damage grew has a damaging peak > 0, got 0");
-	EXPECT_EQ(messageOf([&] { plan(params(), linear(4, 0, 0.01), {NAN}, 10); }).rfind("peak[0]: ", 0), 0u);
-	EXPECT_EQ(messageOf([&] { plan(params(), linear(4, 0, 0.01), {0.6}, -1); }), "remaining: expected >= 0 cycles, got -1");
+	EXPECT_EQ(messageOf([&] { plan(params(), linear(4, 0, 0.01), steadyPeaks(4, {0.0}), kFar, 10); }),
+	          "peaks: grain 0's damage grew in the window, but its peaks are 0");
+	EXPECT_EQ(messageOf([&] { plan(params(), linear(4, 0, 0.01), steadyPeaks(4, {NAN}), kFar, 10); }).rfind("peaks[0]: ", 0),
+	          0u);
+	EXPECT_EQ(messageOf([&] { plan(params(), linear(4, 0, 0.01), steadyPeaks(4, {0.6}), kFar, -1); }),
+	          "remaining: expected >= 0 cycles, got -1");
+	EXPECT_EQ(messageOf([&] { plan(params(), linear(4, 0, 0.01), steadyPeaks(4, {0.6}), 0, 5); }), "cycle: expected >= 1, got 0");
 }

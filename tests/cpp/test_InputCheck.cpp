@@ -124,7 +124,8 @@ std::string wordsFromBounds(const ParameterRange& r)
 TEST(InputCheck, EveryRangeIsListedOnceByItsName)
 {
 	const char* expected[] = {"ft0", "m", "rMin", "seed", "weibullModulus", "fatigueExponent", "fatigueEndurance",
-	                          "fatigueHysteresis", "strength", "jumpWindow", "jumpSteady", "jumpMaxDamage", "jumpMargin"};
+	                          "fatigueHysteresis", "strength", "jumpWindow", "jumpSteady", "jumpMaxDamage", "jumpMargin",
+	                          "jumpGrowth"};
 	ASSERT_EQ(parameterRanges().size(), sizeof expected / sizeof *expected);
 	for (size_t i = 0; i < parameterRanges().size(); ++i)
 		EXPECT_EQ(std::string(parameterRanges()[i]->name), expected[i]);

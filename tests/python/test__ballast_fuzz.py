@@ -553,19 +553,31 @@ def matricesToArray(g):
     return kw, check
 
 
-def cycleJumpRef(D, peak, remaining, W, steady, maxDamage, margin):
+def cycleJumpRef(D, S, cycle, remaining, W, steady, maxDamage, margin, growth, endurance):
     """CycleJump.hpp's bounds, written again: (cycles, limit, grain, maxRate, rate)."""
     h, best, limit, grain = W // 2, float(remaining), 'remaining', -1
+    if math.floor(growth * cycle) < best:
+        best, limit = max(math.floor(growth * cycle), 0.0), 'growth'
     rate = (D[W] - D[0]) / W
     for k, r in enumerate(rate):
-        if r <= 0:
-            continue
-        a, b = (D[h, k] - D[0, k]) / h, (D[W, k] - D[h, k]) / (W - h)
-        bounds = [(math.floor(maxDamage / r), 'maxDamage')]
-        if a != b:
-            bounds.append((math.floor(steady * maxDamage / abs(b - a)), 'steady'))
-        bounds.append((math.floor((1.0 - peak[k] - D[W, k]) / r) - margin, 'failure'))
-        for c, name in bounds:
+        sMax, first, second = 0.0, 0.0, 0.0
+        for c in range(W):
+            sMax = max(sMax, S[c, k])
+            if c < h:
+                first += S[c, k]
+            else:
+                second += S[c, k]
+        drift = (second / (W - h) - first / h) / (0.5 * W)
+        bounds = []
+        if sMax < endurance and drift > 0:
+            bounds.append((math.floor((endurance - sMax) / drift), 'endurance'))
+        if r > 0:
+            a, b = (D[h, k] - D[0, k]) / h, (D[W, k] - D[h, k]) / (W - h)
+            bounds.append((math.floor(maxDamage / r), 'maxDamage'))
+            if a != b:
+                bounds.append((math.floor(steady * maxDamage / abs(b - a)), 'steady'))
+            bounds.append((math.floor((1.0 - sMax - D[W, k]) / r) - margin, 'failure'))
+        for c, name in bounds:   # in the order the C++ tests them: endurance, maxDamage, steady, failure
             if c < best:
                 best, limit, grain = max(c, 0.0), name, k
     return int(best), limit, grain, max([0.0] + list(rate)), rate
@@ -575,18 +587,21 @@ def cycleJumpPlan(g):
     W, n = int(g.rng.integers(2, 6)), int(g.rng.integers(0, 5))
     inc = g.rng.uniform(0, 0.02, (W, n)) * (g.rng.random((W, n)) < 0.7)
     D = np.vstack([g.rng.uniform(0, 0.5, (1, n)) * (g.rng.random(n) < 0.5), inc]).cumsum(axis=0)
-    peak = np.where(D[-1] > D[0], g.rng.uniform(0.3, 1.0, n), g.rng.uniform(0, 1.0, n) * (g.rng.random(n) < 0.5))
-    kw = dict(damage=g.array(D), peak=g.array(peak), remaining=g.number(float(g.rng.integers(0, 10 ** 6))),
-              window=g.number(float(W)), steady=g.number(g.rng.uniform(0.01, 1)),
-              maxDamage=g.number(g.rng.uniform(0.001, 0.99)), margin=g.number(float(g.rng.integers(0, 4))))
+    S = g.rng.uniform(0.05, 1.0, (W, n)) * (g.rng.random((W, n)) < 0.9)
+    S[:, D[-1] > D[0]] += 0.01                               # a grain whose damage grew has peaks
+    kw = dict(damage=g.array(D), peaks=g.array(S), cycle=g.number(float(g.rng.integers(1, 10 ** 4))),
+              remaining=g.number(float(g.rng.integers(0, 10 ** 6))), window=g.number(float(W)),
+              steady=g.number(g.rng.uniform(0.01, 1)), maxDamage=g.number(g.rng.uniform(0.001, 0.99)),
+              margin=g.number(float(g.rng.integers(0, 4))), growth=g.number(g.pick([0.5, 1.0, 10.0, 1000.0])),
+              endurance=g.number(g.rng.uniform(0, 0.9)))
 
     def check(out):
         cycles, limit, grain, maxRate, rate = out
-        args = [asFloat(kw[k]) for k in ('damage', 'peak', 'remaining', 'window', 'steady', 'maxDamage', 'margin')]
-        Dx, pk = args[0], args[1]
-        if Dx.shape != (W + 1, n) or not moderate(Dx, pk):
+        x = {k: asFloat(v) for k, v in kw.items()}
+        if x['damage'].shape != (W + 1, n) or not moderate(x['damage'], x['peaks']):
             return False
-        want = cycleJumpRef(Dx, pk, float(args[2]), W, float(args[4]), float(args[5]), float(args[6]))
+        want = cycleJumpRef(x['damage'], x['peaks'], float(x['cycle']), float(x['remaining']), W, float(x['steady']),
+                            float(x['maxDamage']), float(x['margin']), float(x['growth']), float(x['endurance']))
         assert (cycles, limit, grain) == want[:3] and rate.shape == (n,)
         close(rate, want[4], atol=1e-300)
         assert maxRate == pytest.approx(want[3], rel=1e-12, abs=1e-300)

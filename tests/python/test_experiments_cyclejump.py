@@ -40,7 +40,7 @@ def test_without_a_jumper_the_grain_crushes_in_cycle_61(monkeypatch):
 
 @pytest.mark.parametrize('window,margin', [(2, 0), (4, 1), (6, 3)])
 def test_with_jumping_the_grain_crushes_in_the_same_cycle(monkeypatch, window, margin):
-    cycle, j = crushCycle(monkeypatch, CycleJumper(window=window, steady=0.2, maxDamage=0.99, margin=margin))
+    cycle, j = crushCycle(monkeypatch, CycleJumper(window=window, steady=0.2, maxDamage=0.99, margin=margin, growth=1000.0))
     assert cycle == CRUSH_CYCLE
     assert j.jumped > 30 and len(j.jumps) >= 1
     # the first jump ends margin cycles before the last cycle the grain survives (59 peaks: 60 - 1 - margin)
@@ -50,7 +50,7 @@ def test_with_jumping_the_grain_crushes_in_the_same_cycle(monkeypatch, window, m
 def test_small_jumps_add_up_to_the_same_damage(monkeypatch):
     """maxDamage 0.02 limits each jump to floor(0.02 / r) = 2 cycles (r = 0.4 0.6^8 = 0.0067): many jumps, the
     crush still in cycle 61 and each jump's damage within maxDamage."""
-    cycle, j = crushCycle(monkeypatch, CycleJumper(window=2, steady=0.2, maxDamage=0.02, margin=0))
+    cycle, j = crushCycle(monkeypatch, CycleJumper(window=2, steady=0.2, maxDamage=0.02, margin=0, growth=1000.0))
     assert cycle == CRUSH_CYCLE and len(j.jumps) > 5
     r = 0.4 * 0.6 ** 8
     assert all(e['cycles'] * r <= 0.02 for e in j.jumps) and all(e['limit'] == 'maxDamage' for e in j.jumps[:-1])
@@ -61,7 +61,7 @@ def test_the_settlement_of_a_jump_comes_from_the_log_law_of_the_simulated_cycles
     cycle N0 to N0 + DN adds 1e-4 ln((N0 + DN) / N0), and at the n-th simulated cycle, cycle N of the count, the
     jumped cycles' settlement is 1e-4 ln(N / n)."""
     from ballast.experiments.cyclejump import settlementJumped
-    _, j = crushCycle(monkeypatch, CycleJumper(window=2, steady=0.2, maxDamage=0.99, margin=0))
+    _, j = crushCycle(monkeypatch, CycleJumper(window=2, steady=0.2, maxDamage=0.99, margin=0, growth=1000.0))
     e = j.jumps[0]
     assert e['settlementLawB'] == pytest.approx(1e-4, rel=1e-9) and e['settlementLawR2'] == pytest.approx(1, abs=1e-12)
     assert e['settlementJumped'] == pytest.approx(1e-4 * math.log(e['to'] / e['cycle']), rel=1e-9)
@@ -74,7 +74,7 @@ def test_the_settlement_of_a_jump_comes_from_the_log_law_of_the_simulated_cycles
 
 def test_the_jumpers_state_comes_back_whole(monkeypatch):
     g, crush = fatigueGrain(monkeypatch)
-    j = CycleJumper(window=3, steady=0.2, maxDamage=0.99, margin=1)
+    j = CycleJumper(window=3, steady=0.2, maxDamage=0.99, margin=1, growth=1000.0)
     j.target = 100
     for cycle in range(1, 5):
         O.run(PER_CYCLE, True)
@@ -90,7 +90,7 @@ def test_the_jumpers_state_comes_back_whole(monkeypatch):
 
 def test_a_crush_or_a_new_grain_restarts_the_window(monkeypatch):
     g, crush = fatigueGrain(monkeypatch)
-    j = CycleJumper(window=2, steady=0.2, maxDamage=0.99, margin=0)
+    j = CycleJumper(window=2, steady=0.2, maxDamage=0.99, margin=0, growth=1000.0)
     j.target = 100
     for cycle in range(1, 3):
         O.run(PER_CYCLE, True)
@@ -101,3 +101,15 @@ def test_a_crush_or_a_new_grain_restarts_the_window(monkeypatch):
     assert j.cycleEnded(crush, [g], 4, 0.0, False) is None and len(j.increments) == 1
     O.run(PER_CYCLE, True)
     assert j.cycleEnded(crush, [g], 5, 0.0, False) is not None                     # two steady cycles again
+
+
+def test_growth_at_most_doubles_the_count_and_the_crush_stays_in_cycle_61(monkeypatch):
+    cycle, j = crushCycle(monkeypatch, CycleJumper(window=2, steady=0.2, maxDamage=0.99, margin=0, growth=1.0))
+    assert cycle == CRUSH_CYCLE and len(j.jumps) >= 2
+    assert all(e['to'] <= 2 * e['cycle'] for e in j.jumps) and j.jumps[0]['limit'] == 'growth'
+
+
+def test_no_jump_before_jump_after(monkeypatch):
+    cycle, j = crushCycle(monkeypatch, CycleJumper(window=2, steady=0.2, maxDamage=0.99, margin=0, growth=1000.0,
+                                                   after=30))
+    assert cycle == CRUSH_CYCLE and j.jumps and j.jumps[0]['cycle'] == 30

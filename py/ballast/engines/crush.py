@@ -55,8 +55,8 @@ class BallastCrushEngine(BallastEngine):
         return self.__dict__['_fatigue'].of(ids)
 
     def takeFatiguePeaks(self, ids):
-        """The largest damaging peak of sigma_e / f_t [-] of each grain of ids since the last call (0 if none), for
-        cycle jumping (docs/cycles.md)."""
+        """The largest sigma_e / f_t [-] of each grain of ids since the last call (0 if none), for cycle jumping
+        (docs/cycles.md)."""
         return self.__dict__['_fatigue'].takePeaks(ids)
 
     def advanceFatigue(self, ids, damage, peaks):

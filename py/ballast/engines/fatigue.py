@@ -1,7 +1,7 @@
 """Fatigue of the grains (docs/fatigue.md): the state of every grain by body id, an (n, 4) array of
 damage D [-], the running extreme of s = sigma_e / f_t [-], rising (1/0) and the damaging peaks;
-the Basquin-Miner update is the C++ core's ``fatigueCheck``. Beside it, each grain's largest damaging peak
-since it was last taken (cycle jumping's failure bound, docs/cycles.md)."""
+the Basquin-Miner update is the C++ core's ``fatigueCheck``. Beside it, each grain's largest s since it was
+last taken (what cycle jumping reads at each cycle's end, docs/cycles.md)."""
 import base64
 
 import numpy as np
@@ -14,7 +14,7 @@ FRESH = (0.0, 0.0, 1.0, 0.0)  # a new grain: undamaged, no extreme yet, rising, 
 class FatigueState:
     def __init__(self):
         self.rows = None   # (n, 4) by body id, grown on demand
-        self.peaks = None  # (n,) by body id: the largest damaging peak of s since takePeaks, 0 if none
+        self.peaks = None  # (n,) by body id: the largest s since takePeaks, 0 if none
 
     def of(self, ids=None):
         """Rows of ids (default: every id up to the largest seen), fresh where never seen."""
@@ -41,13 +41,9 @@ class FatigueState:
     def check(self, ratio, radii, ids, exponent, endurance, hysteresis, rMin):
         """One check of s = ratio for the grains ids: (crush, the damage D of each) (docs/fatigue.md)."""
         F = self.grown(ids)
-        before = F[ids]
-        F[ids], crush = _ballast.fatigueCheck(ratio, radii, before, exponent, endurance, hysteresis, rMin)
-        counted = F[ids, 3] > before[:, 3]
-        if counted.any():   # the peak counted is the running maximum before the sample that ended it
-            P = self.peaksGrown(len(F))
-            at = ids[counted]
-            P[at] = np.maximum(P[at], before[counted, 1])
+        F[ids], crush = _ballast.fatigueCheck(ratio, radii, F[ids], exponent, endurance, hysteresis, rMin)
+        P = self.peaksGrown(len(F))
+        P[ids] = np.maximum(P[ids], ratio)
         return crush, F[ids, 0]
 
     def peaksGrown(self, n):
@@ -59,7 +55,7 @@ class FatigueState:
         return self.peaks
 
     def takePeaks(self, ids):
-        """The largest damaging peak of s of each of ids since the last take (0 if none); starts them afresh."""
+        """The largest s of each of ids since the last take (0 if none); starts them afresh."""
         ids = np.asarray(ids, dtype=np.int64)
         P = self.peaksGrown(int(np.max(ids)) + 1 if len(ids) else 0)
         out = P[ids].copy()

@@ -49,15 +49,17 @@ def settlementJumped(cycles, settlements):
 @runtime.persistent('CycleJumper')
 class CycleJumper:
     """The damage rates of the last simulated cycles, the jumps made and the settlement they extrapolated.
-    window [cycles], steady [-], maxDamage [-], margin [cycles]: the parameters jumpWindow, jumpSteady,
-    jumpMaxDamage, jumpMargin (ballast.params.CYCLE_JUMP, checked by the experiment)."""
+    window [cycles], steady [-], maxDamage [-], margin [cycles], growth [-], after [cycles]: the parameters
+    jumpWindow, jumpSteady, jumpMaxDamage, jumpMargin, jumpGrowth, jumpAfter (ballast.params.CYCLE_JUMP, checked
+    by the experiment)."""
 
-    def __init__(self, window=10, steady=0.2, maxDamage=0.05, margin=1):
+    def __init__(self, window=10, steady=0.2, maxDamage=0.05, margin=1, growth=1.0, after=0):
         self.window, self.steady, self.maxDamage, self.margin = int(window), steady, maxDamage, int(margin)
+        self.growth, self.after = growth, int(after)
         self.target = None        # the cycle the run ends at (no jump goes past it)
         self.ids = []             # the grains of the window (body ids)
         self.last = None          # (2, n): their damage D and damaging peaks at the last cycle's end (after a jump)
-        self.increments = []      # per simulated cycle of the window: (3, n) increments of D and peaks, the largest peak
+        self.increments = []      # per simulated cycle of the window: (3, n) increments of D and peaks, the largest s
         self.direct = []          # [cycle (with the jumped ones), simulated settlement [m]] of every simulated cycle
         self.jumps = []           # one dict per jump (LOG_COLUMNS)
         self.jumped = 0           # cycles not simulated [cycles]
@@ -68,13 +70,15 @@ class CycleJumper:
     @classmethod
     def of(cls, p):
         """The jumper of the parameters p, None without jump."""
-        return cls(p['jumpWindow'], p['jumpSteady'], p['jumpMaxDamage'], p['jumpMargin']) if p['jump'] else None
+        return cls(*(p[k] for k in ('jumpWindow', 'jumpSteady', 'jumpMaxDamage', 'jumpMargin', 'jumpGrowth',
+                                    'jumpAfter'))) if p['jump'] else None
 
     def tune(self, p):
         """The parameters p (checked) of a run reopened with other jump settings; jump off: no more jumps, the
         cycles jumped stay counted."""
         self.window, self.steady, self.maxDamage, self.margin = (int(p['jumpWindow']), p['jumpSteady'],
                                                                  p['jumpMaxDamage'], int(p['jumpMargin']))
+        self.growth, self.after = p['jumpGrowth'], int(p['jumpAfter'])
         self.on = bool(p['jump'])
         self.increments = self.increments[-self.window:]
 
@@ -94,13 +98,14 @@ class CycleJumper:
         self.last = now
         # the last cycle of a run is simulated: its end state is a real one
         remaining = (self.target - cycle - 1) if self.target is not None and self.on else 0
-        if len(self.increments) < self.window or remaining < 1:
+        if len(self.increments) < self.window or remaining < 1 or cycle < self.after:
             return None
         inc = np.array(self.increments)                       # (window, 3, n)
         damage = now[0] - np.concatenate([np.cumsum(inc[::-1, 0], axis=0)[::-1], np.zeros((1, len(ids)))])
-        damage = np.maximum(damage, 0.0)                      # rounding of the sums must not make it negative
+        damage = np.maximum.accumulate(np.maximum(damage, 0.0), axis=0)   # rounding of the sums: never falling
         cycles, limit, grain, maxRate, rate = _ballast.cycleJumpPlan(
-            damage, np.max(inc[:, 2], axis=0), remaining, self.window, self.steady, self.maxDamage, self.margin)
+            damage, inc[:, 2], cycle, remaining, self.window, self.steady, self.maxDamage, self.margin, self.growth,
+            engine.fatigueEndurance)
         if cycles < 1:
             return None
         self.pending = {'cycle': int(cycle), 'cycles': int(cycles), 'limit': limit,
@@ -137,8 +142,8 @@ class CycleJumper:
 
     # ------------------------------------------------------------------ saving
     def state(self):
-        s = {k: getattr(self, k) for k in ('window', 'steady', 'maxDamage', 'margin', 'target', 'ids', 'direct',
-                                           'jumps', 'jumped', 'extrapolated', 'on')}
+        s = {k: getattr(self, k) for k in ('window', 'steady', 'maxDamage', 'margin', 'growth', 'after', 'target',
+                                           'ids', 'direct', 'jumps', 'jumped', 'extrapolated', 'on')}
         s['last'] = _pack(self.last)
         s['increments'] = [_pack(a) for a in self.increments]
         s['pending'] = None if self.pending is None else dict(
@@ -147,7 +152,7 @@ class CycleJumper:
 
     @classmethod
     def fromState(cls, s, ref=None):
-        j = cls(s['window'], s['steady'], s['maxDamage'], s['margin'])
+        j = cls(s['window'], s['steady'], s['maxDamage'], s['margin'], s['growth'], s['after'])
         for k in ('target', 'ids', 'direct', 'jumps', 'jumped', 'extrapolated'):
             setattr(j, k, s[k])
         j.on = s.get('on', True)
