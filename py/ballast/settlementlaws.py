@@ -1,7 +1,7 @@
 """The laws permanent settlement follows against the number of load cycles N in box tests, fitted by least
 squares: logarithmic s = a + b ln N and power s = c N^d (both pass through N = 1 with a's and c's share). Used
 by the analyses of cyclic studies (ballast.analysis.settlement) and by cycle jumping, which extrapolates the
-settlement of the cycles it does not simulate (docs/cycles.md). NumPy, no YADE."""
+settlement of the cycles it does not simulate (docs/cycles.md: settlementLaw, settlementJumped). NumPy, no YADE."""
 import math
 
 import numpy as np
@@ -25,3 +25,24 @@ def fitLaws(N, s):
 def r2(y, fitted):
     ss = float(np.sum((y - np.mean(y)) ** 2))
     return 1.0 - float(np.sum((y - fitted) ** 2)) / ss if ss > 0 else 1.0
+
+
+def settlementLaw(settlements):
+    """The law s = a + b ln n fitted to the simulated cycles' settlements [m] (the n-th simulated cycle's at n):
+    {a, b, r2}, None below 3 cycles."""
+    return fitLaws(np.arange(1, len(settlements) + 1), settlements)['log'] if len(settlements) >= 3 else None
+
+
+def settlementJumped(cycles, settlements):
+    """The settlement [m] the jumped cycles add at each simulated cycle: the n-th simulated cycle is cycle N of the
+    count (cycles), the bed saw n, so b_n ln(N / n) with b_n of the law fitted to the first n simulated settlements
+    (what was known then: a later crush does not move an earlier row); 0 below 3."""
+    s = np.asarray(settlements, float)
+    n = np.arange(1, len(s) + 1, dtype=float)
+    x = np.log(n)
+    # least squares of s = a + b x over the first n rows, from running sums
+    Sx, Sy, Sxx, Sxy = np.cumsum(x), np.cumsum(s), np.cumsum(x * x), np.cumsum(x * s)
+    den = Sxx - Sx * Sx / n
+    with np.errstate(divide='ignore', invalid='ignore'):
+        b = np.where((n >= 3) & (den > 0), (Sxy - Sx * Sy / n) / den, 0.0)
+    return b * np.log(np.asarray(cycles, float) / n)

@@ -60,7 +60,7 @@ def test_the_settlement_of_a_jump_comes_from_the_log_law_of_the_simulated_cycles
     """The bed here settles s = 1e-4 (1 + ln n) after n simulated cycles exactly: the law is found; a jump from
     cycle N0 to N0 + DN adds 1e-4 ln((N0 + DN) / N0), and at the n-th simulated cycle, cycle N of the count, the
     jumped cycles' settlement is 1e-4 ln(N / n)."""
-    from ballast.experiments.cyclejump import settlementJumped
+    from ballast.settlementlaws import settlementJumped
     _, j = crushCycle(monkeypatch, CycleJumper(window=2, steady=0.2, maxDamage=0.99, margin=0, growth=1000.0))
     e = j.jumps[0]
     assert e['settlementLawB'] == pytest.approx(1e-4, rel=1e-9) and e['settlementLawR2'] == pytest.approx(1, abs=1e-12)
@@ -68,8 +68,13 @@ def test_the_settlement_of_a_jump_comes_from_the_log_law_of_the_simulated_cycles
     N = np.array([c for c, _ in j.direct])
     n = np.arange(1, len(N) + 1)
     assert N[-1] > n[-1]
-    np.testing.assert_allclose(settlementJumped(N, [s for _, s in j.direct]), 1e-4 * np.log(N / n), rtol=1e-9,
-                               atol=1e-18)
+    got = settlementJumped(N, [s for _, s in j.direct])
+    assert np.all(got[:2] == 0)                                 # no law below 3 simulated cycles
+    np.testing.assert_allclose(got[2:], 1e-4 * np.log(N / n)[2:], rtol=1e-9, atol=1e-18)
+    # causal: a settlement that jumps later does not move the earlier rows
+    later = [s for _, s in j.direct]
+    later[-1] += 1.0
+    np.testing.assert_array_equal(settlementJumped(N, later)[:-1], got[:-1])
 
 
 def test_the_jumpers_state_comes_back_whole(monkeypatch):

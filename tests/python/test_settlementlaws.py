@@ -15,3 +15,14 @@ def test_a_logarithmic_and_a_power_settlement_give_their_laws_back():
     assert fit['power']['r2'] == pytest.approx(1.0, abs=1e-12) and fit['log']['r2'] < 1 - 1e-3
     with pytest.raises(ValueError, match='at least 3 cycles N >= 1'):
         settlementlaws.fitLaws([0, 1, 2], [1, 2, 3])
+
+
+def test_the_jumped_cycles_settlement_is_b_ln_N_over_n_with_b_known_then():
+    """Rows: simulated cycles n = 1..5 at counted cycles 1, 2, 3, 10, 20 of a bed settling 2e-4 + 5e-5 ln n: the
+    law is found from the third row on, and the jumped cycles add 5e-5 ln(N / n)."""
+    n = np.arange(1, 6)
+    N = np.array([1, 2, 3, 10, 20])
+    got = settlementlaws.settlementJumped(N, 2e-4 + 5e-5 * np.log(n))
+    np.testing.assert_allclose(got, [0, 0, 0, 5e-5 * np.log(10 / 4), 5e-5 * np.log(20 / 5)], rtol=1e-9, atol=1e-18)
+    assert settlementlaws.settlementLaw([1e-4, 2e-4]) is None
+    assert settlementlaws.settlementLaw(2e-4 + 5e-5 * np.log(n))['b'] == pytest.approx(5e-5, rel=1e-9)

@@ -6,6 +6,7 @@ cycles of the first crushes, the crushes and the settlement after the last cycle
 import numpy as np
 import pandas as pd
 
+from ..settlementlaws import settlementJumped
 from ..study.data import StudyRuns
 
 FIRST = 3   # the first crushes compared, by their cycle
@@ -28,8 +29,10 @@ def crushCycles(run):
 
 
 def _settlement(run):
+    """The settlement after the last cycle [m], the jumped cycles' worked out again from cycles.csv (as the code
+    of today extrapolates them, whatever code made the run)."""
     c = run.cycles
-    extra = c.settlementJumped.iloc[-1] if 'settlementJumped' in c else 0.0
+    extra = settlementJumped(c.cycle, c.settlement)[-1] if 'jumped' in c else 0.0
     return float(c.settlement.iloc[-1] + extra)
 
 
@@ -102,7 +105,7 @@ def figure(path, out):
     seeds = sorted(runs.seed.unique())
     for _, r in runs.sort_values(['seed', 'cycles', 'jump']).iterrows():
         c = r.run.cycles
-        total = c.settlement + (c.settlementJumped if 'settlementJumped' in c else 0.0)
+        total = c.settlement + (settlementJumped(c.cycle, c.settlement) if 'jumped' in c else 0.0)
         colour = 'C%d' % seeds.index(r.seed)
         style = '-' if not r.jump else ('--' if r.cycles <= 1000 else ':')
         label = 'seed %d, %s, %d cycles' % (r.seed, 'jumping' if r.jump else 'direct', r.cycles)

@@ -8,7 +8,7 @@ import math
 import numpy as np
 import pandas as pd
 
-from ..settlementlaws import fitLaws
+from ..settlementlaws import fitLaws, settlementJumped
 from ..study.data import StudyRuns
 
 
@@ -31,8 +31,11 @@ def curves(paths):
 
 
 def total(cycles):
-    """The settlement [m] of each row of cycles.csv; with cycle jumping, the jumped cycles' extrapolation added."""
-    return cycles['settlement'] + (cycles['settlementJumped'] if 'settlementJumped' in cycles else 0.0)
+    """The settlement [m] of each row of cycles.csv; with cycle jumping, the jumped cycles' extrapolation added
+    (worked out again from the rows, as the code of today does it)."""
+    if 'jumped' not in cycles:
+        return cycles['settlement']
+    return cycles['settlement'] + settlementJumped(cycles['cycle'], cycles['settlement'])
 
 
 def summary(frame):

@@ -4,7 +4,7 @@ jumper measures each grain's fatigue damage rate, and where the C++ core (pkg/Cy
 of DN cycles every grain's damage is advanced by DN rates at once. Crushes are never extrapolated: the jump
 ends before the cycle the first grain would fail in. The grains do not move during a jump: the bed has seen
 n simulated cycles when the count says N, so the settlement of the jumped cycles is b ln(N / n), with b of
-the law s = a + b ln n fitted to the simulated cycles (:func:`settlementJumped`), reported apart.
+the law s = a + b ln n fitted to the simulated cycles (ballast.settlementlaws.settlementJumped), reported apart.
 
 The experiment owns the cycle count and the states: it calls :meth:`CycleJumper.cycleEnded` at each simulated
 cycle's end, and when that returns a plan, :meth:`CycleJumper.apply` at the start of the next step (where a
@@ -15,7 +15,7 @@ import numpy as np
 import pandas as pd
 
 from .. import _ballast, runtime
-from ..settlementlaws import fitLaws
+from ..settlementlaws import settlementLaw
 from ..study.files import writeAtomic
 
 LOG_COLUMNS = ('jump', 'cycle', 'cycles', 'to', 'limit', 'grain', 'maxRate', 'maxDamage', 'settlementLawA',
@@ -29,21 +29,6 @@ def _pack(a):
 
 def _unpack(s):
     return None if s is None else np.frombuffer(base64.b64decode(s['data']), dtype=float).reshape(s['shape']).copy()
-
-
-def settlementLaw(settlements):
-    """The law s = a + b ln n fitted to the simulated cycles' settlements [m] (the n-th simulated cycle's at n):
-    {a, b, r2}, None below 3 cycles."""
-    return fitLaws(np.arange(1, len(settlements) + 1), settlements)['log'] if len(settlements) >= 3 else None
-
-
-def settlementJumped(cycles, settlements):
-    """The settlement [m] the jumped cycles add at each simulated cycle: the n-th simulated cycle is cycle N of the
-    count (cycles), the bed saw n, so b ln(N / n) with b of the law fitted to every simulated settlement; 0 without
-    a fit."""
-    law = settlementLaw(settlements)
-    n = np.arange(1, len(cycles) + 1)
-    return law['b'] * np.log(np.asarray(cycles, float) / n) if law else np.zeros(len(cycles))
 
 
 @runtime.persistent('CycleJumper')

@@ -31,7 +31,7 @@ from ... import grading as gr
 from ...engines import BallastAbrasionEngine, BallastCrushEngine
 from ...study.files import saveFigure, writeAtomic
 from .. import grains
-from ..cyclejump import settlementJumped
+from ...settlementlaws import settlementJumped
 from ..oedometer.outputs import _array, _unstructured, writeContactsVtu, writePvd
 from . import zones
 

@@ -39,7 +39,7 @@ from ...study.files import writeAtomic
 from .. import chain, grains
 from .. import timestep
 from ..base import Experiment
-from ..cyclejump import settlementJumped
+from ...settlementlaws import settlementJumped
 from .loading import MODES
 from .outputs import Outputs
 from .packing import StoredPacking

@@ -18,7 +18,7 @@ from yade.wrapper import Facet, Sphere
 
 from ... import _ballast, grading, harvest, runtime
 from ...study.files import saveFigure, writeAtomic
-from ..cyclejump import settlementJumped
+from ...settlementlaws import settlementJumped
 
 FD_COLUMNS = ('t', 'F', 'delta', 'nCrushed', 'nAbraded', 'Fapplied')
 CHECK_COLUMNS = ('t', 'iter', 'nCrushed', 'maxStressRatio', 'maxCrushableRatio', 'inertialNumber')
@@ -322,14 +322,19 @@ class Outputs:
         c = np.array(self.cycleRows, dtype=float)
         fig, ax = plt.subplots(figsize=(7, 4.5))
         ax.semilogx(c[:, 0], c[:, 2] * 1e3, 'o-', color='C0', label='permanent settlement')
+        if exp.jumper is not None and exp.jumper.jumps:   # the jumped cycles' settlement, extrapolated
+            ax.semilogx(c[:, 0], (c[:, 2] + settlementJumped(c[:, 0], c[:, 2])) * 1e3, 'x:', color='C0',
+                        label="with the jumped cycles' settlement (a + b ln n)")
+            ax.legend(fontsize=8, loc='upper left')
         ax.set_xlabel('load cycles N')
         ax.set_ylabel('settlement [mm]', color='C0')
         ax.grid(alpha=0.3, which='both')
         ax2 = ax.twinx()
         ax2.semilogx(c[:, 0], c[:, 6], 's--', color='C3', label='$B_g$')
         ax2.set_ylabel("Marsal's $B_g$ [%]", color='C3')
-        ax.set_title('%s: %d cycles between %g and %g kN at %g Hz' % (exp.runId, len(c), exp.p['Fmin'] / 1e3,
-                                                                     exp.p['Fmax'] / 1e3, exp.p['f']), fontsize=9)
+        ax.set_title('%s: %d cycles between %g and %g kN at %g Hz%s' % (
+            exp.runId, int(c[-1, 0]), exp.p['Fmin'] / 1e3, exp.p['Fmax'] / 1e3, exp.p['f'],
+            ' (%d simulated)' % len(c) if len(c) != int(c[-1, 0]) else ''), fontsize=9)
         fig.tight_layout()
         saveFigure(fig, os.path.join(exp.out, 'cycles.png'))
 
