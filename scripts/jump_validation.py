@@ -20,9 +20,10 @@ def main(argv=None):
     ap = argparse.ArgumentParser(prog='scripts/jump_validation.py', description=__doc__.split('\n\n')[0])
     ap.add_argument('study', help='a study or its records, with runs of the same seeds directly and with jump')
     ap.add_argument('--out', required=True, help='where validation.csv, long.csv, validation.json and jumps.png go')
+    ap.add_argument('--reference', help='a study whose direct runs the jumping runs of STUDY are compared with')
     a = ap.parse_args(argv)
     try:
-        table, long = jumps.compare(a.study), jumps.longRuns(a.study)
+        table, long = jumps.compare(a.study, a.reference), jumps.longRuns(a.study)
     except (StudyError, ValueError, KeyError) as e:
         print('jump_validation.py: %s' % e, file=sys.stderr)
         return 2
@@ -37,7 +38,7 @@ def main(argv=None):
     print(table.to_string(index=False))
     print(long.to_string(index=False))
     print(json.dumps(result['agree']))
-    jumps.figure(a.study, os.path.join(a.out, 'jumps.png'))
+    jumps.figure(a.study, os.path.join(a.out, 'jumps.png'), a.reference)
     print(os.path.join(a.out, 'jumps.png'))
     return 0
 

@@ -105,5 +105,10 @@ def test_the_command_line_writes_its_files_and_refuses_a_folder_that_is_no_study
         assert os.path.getsize(os.path.join(out, name)) > 0
     with open(os.path.join(out, 'validation.json')) as fh:
         assert json.load(fh)['agree']['crush1Agrees'] == '1 of 1'
+    # a variant's jumping runs against the direct runs of another study
+    variant = study(str(tmp_path / 'v'), [('j1', 1, 10, True, [1, 2, 3, 4, 5, 9, 10], [2.5 * T])])
+    assert main([variant, '--reference', root, '--out', out]) == 0
+    t = pd.read_csv(os.path.join(out, 'validation.csv'))
+    assert len(t) == 1 and t.simulatedJump.iloc[0] == 7 and t.simulatedDirect.iloc[0] == 10
     assert main([str(tmp_path / 'nothing'), '--out', out]) == 2
     assert 'no such directory' in capsys.readouterr().err

@@ -41,7 +41,12 @@ def _within(a, b, tol):
     return bool(abs(a - b) <= max(rel * abs(b), absolute))
 
 
-def _runs(path):
+def _runs(path, reference=None):
+    """The runs of the study at path, and the direct runs of the study at reference (a variant of jumping
+    compared with the direct runs another study made)."""
+    if reference is not None:
+        ref = _runs(reference)
+        return pd.concat([_runs(path), ref[~ref.jump]], ignore_index=True)
     study = StudyRuns(path)
     rows = []
     for run in study.runs:
@@ -51,11 +56,12 @@ def _runs(path):
     return pd.DataFrame(rows)
 
 
-def compare(path):
+def compare(path, reference=None):
     """Per seed and cycle count run both ways: a DataFrame with, for direct (d) and jumping (j), the cycles
     simulated, the CPU [s], the first FIRST crush cycles, the crushes and the settlement [m] after the last cycle,
-    and whether each agrees within its tolerance."""
-    runs = _runs(path)
+    and whether each agrees within its tolerance. reference: a study whose direct runs are compared with the
+    jumping runs of path."""
+    runs = _runs(path, reference)
     out = []
     for (seed, cycles), g in runs.groupby(['seed', 'cycles']):
         if set(g.jump) != {False, True}:
@@ -93,14 +99,14 @@ def longRuns(path, atLeast=1000):
     return pd.DataFrame(out)
 
 
-def figure(path, out):
+def figure(path, out, reference=None):
     """Settlement (jumped cycles' included) and crushes against log N: every run, direct solid, jumping dashed,
-    one colour per seed."""
+    one colour per seed (the direct runs of reference too)."""
     import matplotlib
     matplotlib.use('Agg')
     import matplotlib.pyplot as plt
     from ..study.files import saveFigure
-    runs = _runs(path)
+    runs = _runs(path, reference)
     fig, (ax, bx) = plt.subplots(2, 1, figsize=(7, 7.2), sharex=True)
     seeds = sorted(runs.seed.unique())
     for _, r in runs.sort_values(['seed', 'cycles', 'jump']).iterrows():
