@@ -180,7 +180,7 @@ def figures(exp, files):
         ax.semilogx(cyc.cycle, 1e3 * cyc.resilient, 's--', ms=3, label='resilient deflection')
         if 'settlementJumped' in cyc and cyc.settlementJumped.any():
             ax.semilogx(cyc.cycle, 1e3 * (cyc.settlement + cyc.settlementJumped), 'x:', ms=3,
-                        label='with the jumped cycles\' settlement extrapolated (a + b ln N)')
+                        label='with the jumped cycles\' settlement extrapolated (a + b ln n)')
     ax.set_xlabel('load cycles N')
     ax.set_ylabel('sleeper displacement [mm]')
     ax.set_title('Box test: %.3g-%.3g kN, %s' % (p.history().seat / 1e3, p.history().peak / 1e3, exp.runId), fontsize=9)
