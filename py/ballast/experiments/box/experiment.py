@@ -290,8 +290,8 @@ class BoxTest(Experiment):
         self.say('load: %d cycle(s) of %s, %.4g-%.4g N, %.3g s each, dt = %.3g s (%.3g steps a cycle)' % (
             n, p.history().source, p.history().seat, p.history().peak, rec.period, O.dt, rec.period / O.dt))
 
-        self.runUntil(lambda: self.cyclesDone() >= target or self.onFloor, tEnd=tEnd + 2 * rec.period / p['samples'], phase='load',
-                      checkEvery=50, simSpan=tEnd - O.time, simStart=O.time,
+        self.runUntil(lambda: self.cyclesDone() >= target or self.onFloor, tEnd=tEnd + 2 * rec.period / p['samples'],
+                      phase='load', checkEvery=50, simSpan=tEnd - O.time, simStart=O.time,
                       extra=lambda: 'cycle %d of %d, settlement %.2f mm, %d crushed, %d abraded' % (
                           self.cyclesDone(), target, 1e3 * (rec.samples[-1][4] if rec.samples else 0),
                           rec.samples[-1][6] if rec.samples else 0, rec.samples[-1][7] if rec.samples else 0))
@@ -328,7 +328,7 @@ class BoxTest(Experiment):
     # ------------------------------------------------------------------ saving
     def state(self):
         return dict(self.baseState(), rig=runtime.ref(self.rig), recorder=runtime.ref(self.recorder),
-                    jumper=runtime.ref(self.jumper) if self.jumper is not None else None,
+                    jumper=runtime.ref(self.jumper),
                     bedTop=self.bedTop, porosity=self.porosity, nEscaped=self.nEscaped, nCrib=self.nCrib,
                     bedFile=self.bedFile, onFloor=self.onFloor,
                     initial=self.initial,
