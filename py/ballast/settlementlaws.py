@@ -27,22 +27,36 @@ def r2(y, fitted):
     return 1.0 - float(np.sum((y - fitted) ** 2)) / ss if ss > 0 else 1.0
 
 
+def recentHalf(n):
+    """The first row (1-based) of the recent half of n simulated cycles, ceil(n / 2): the law the bed follows now
+    (a bed that settled fast and then stopped has b = 0 there, not the b of its first cycles)."""
+    return (n + 1) // 2
+
+
 def settlementLaw(settlements):
-    """The law s = a + b ln n fitted to the simulated cycles' settlements [m] (the n-th simulated cycle's at n):
-    {a, b, r2}, None below 3 cycles."""
-    return fitLaws(np.arange(1, len(settlements) + 1), settlements)['log'] if len(settlements) >= 3 else None
+    """The law s = a + b ln n fitted to the recent half of the simulated cycles' settlements [m] (the n-th simulated
+    cycle's at n, rows recentHalf(n)..n): {a, b, r2}, None below 3 rows."""
+    n = len(settlements)
+    m = recentHalf(n)
+    if n - m + 1 < 3:
+        return None
+    return fitLaws(np.arange(m, n + 1), np.asarray(settlements, float)[m - 1:])['log']
 
 
 def settlementJumped(cycles, settlements):
     """The settlement [m] the jumped cycles add at each simulated cycle: the n-th simulated cycle is cycle N of the
-    count (cycles), the bed saw n, so b_n ln(N / n) with b_n of the law fitted to the first n simulated settlements
-    (what was known then: a later crush does not move an earlier row); 0 below 3."""
+    count (cycles), the bed saw n, so b_n ln(N / n) with b_n of settlementLaw over the first n simulated settlements
+    (what was known then: a later crush does not move an earlier row); 0 without a law."""
     s = np.asarray(settlements, float)
-    n = np.arange(1, len(s) + 1, dtype=float)
-    x = np.log(n)
-    # least squares of s = a + b x over the first n rows, from running sums
-    Sx, Sy, Sxx, Sxy = np.cumsum(x), np.cumsum(s), np.cumsum(x * x), np.cumsum(x * s)
-    den = Sxx - Sx * Sx / n
+    n = np.arange(1, len(s) + 1)
+    x = np.log(n.astype(float))
+    # least squares of s = a + b x over rows m..n, m = recentHalf(n), from running sums
+    zero = np.zeros(1)
+    Sx, Sy, Sxx, Sxy = (np.concatenate([zero, np.cumsum(v)]) for v in (x, s, x * x, x * s))
+    m = recentHalf(n)
+    k = (n - m + 1).astype(float)
+    sx, sy, sxx, sxy = (S[n] - S[m - 1] for S in (Sx, Sy, Sxx, Sxy))
+    den = sxx - sx * sx / k
     with np.errstate(divide='ignore', invalid='ignore'):
-        b = np.where((n >= 3) & (den > 0), (Sxy - Sx * Sy / n) / den, 0.0)
+        b = np.where((k >= 3) & (den > 0), (sxy - sx * sy / k) / den, 0.0)
     return b * np.log(np.asarray(cycles, float) / n)

@@ -39,9 +39,10 @@ def test_a_jumped_run_reaches_its_cycles_and_records_every_jump(jumped):
     assert jumps.cycles.sum() == s['cyclesJumped'] and np.all(jumps.to == jumps.cycle + jumps.cycles)
     # the first WINDOW + 1 cycles are simulated, the last one too
     assert list(cyc.cycle[:4]) == [1, 2, 3, 4] and cyc.jumped.iloc[-1] == s['cyclesJumped']
-    # the jumped cycles' settlement: b ln(N / n) at the n-th simulated cycle, b of a + b ln n fitted to the first n
+    # the jumped cycles' settlement: b ln(N / n) at the n-th simulated cycle, b of a + b ln k fitted to k = ceil(n/2)..n
     n = np.arange(1, len(cyc) + 1)
-    b = [np.polyfit(np.log(n[:k]), cyc.settlement[:k], 1)[0] if k >= 3 else 0.0 for k in n]
+    b = [np.polyfit(np.log(n[(k + 1) // 2 - 1:k]), cyc.settlement[(k + 1) // 2 - 1:k], 1)[0]
+         if k - (k + 1) // 2 + 1 >= 3 else 0.0 for k in n]
     np.testing.assert_allclose(cyc.settlementJumped, b * np.log(cyc.cycle / n), rtol=1e-6, atol=1e-12)
     assert s['settlementJumped'] == pytest.approx(cyc.settlementJumped.iloc[-1], rel=1e-6, abs=1e-12)
     assert s['settlementTotal'] == pytest.approx(s['settlement'] + s['settlementJumped'], rel=1e-12)

@@ -61,16 +61,16 @@ def test_the_settlement_of_a_jump_comes_from_the_log_law_of_the_simulated_cycles
     cycle N0 to N0 + DN adds 1e-4 ln((N0 + DN) / N0), and at the n-th simulated cycle, cycle N of the count, the
     jumped cycles' settlement is 1e-4 ln(N / n)."""
     from ballast.settlementlaws import settlementJumped
-    _, j = crushCycle(monkeypatch, CycleJumper(window=2, steady=0.2, maxDamage=0.99, margin=0, growth=1000.0))
-    e = j.jumps[0]
+    _, j = crushCycle(monkeypatch, CycleJumper(window=4, steady=0.2, maxDamage=0.99, margin=0, growth=1000.0))
+    e = j.jumps[0]   # after 5 simulated cycles: the law of rows 3..5
     assert e['settlementLawB'] == pytest.approx(1e-4, rel=1e-9) and e['settlementLawR2'] == pytest.approx(1, abs=1e-12)
     assert e['settlementJumped'] == pytest.approx(1e-4 * math.log(e['to'] / e['cycle']), rel=1e-9)
     N = np.array([c for c, _ in j.direct])
     n = np.arange(1, len(N) + 1)
     assert N[-1] > n[-1]
     got = settlementJumped(N, [s for _, s in j.direct])
-    assert np.all(got[:2] == 0)                                 # no law below 3 simulated cycles
-    np.testing.assert_allclose(got[2:], 1e-4 * np.log(N / n)[2:], rtol=1e-9, atol=1e-18)
+    assert np.all(got[:3] == 0)                                 # no law below 3 rows in the recent half
+    np.testing.assert_allclose(got[3:], 1e-4 * np.log(N / n)[3:], rtol=1e-9, atol=1e-18)
     # causal: a settlement that jumps later does not move the earlier rows
     later = [s for _, s in j.direct]
     later[-1] += 1.0

@@ -19,10 +19,20 @@ def test_a_logarithmic_and_a_power_settlement_give_their_laws_back():
 
 def test_the_jumped_cycles_settlement_is_b_ln_N_over_n_with_b_known_then():
     """Rows: simulated cycles n = 1..5 at counted cycles 1, 2, 3, 10, 20 of a bed settling 2e-4 + 5e-5 ln n: the
-    law is found from the third row on, and the jumped cycles add 5e-5 ln(N / n)."""
+    law (over rows ceil(n / 2)..n, at least 3) is found from the fourth row on, and the jumped cycles add
+    5e-5 ln(N / n)."""
     n = np.arange(1, 6)
     N = np.array([1, 2, 3, 10, 20])
     got = settlementlaws.settlementJumped(N, 2e-4 + 5e-5 * np.log(n))
     np.testing.assert_allclose(got, [0, 0, 0, 5e-5 * np.log(10 / 4), 5e-5 * np.log(20 / 5)], rtol=1e-9, atol=1e-18)
-    assert settlementlaws.settlementLaw([1e-4, 2e-4]) is None
+    assert settlementlaws.settlementLaw([1e-4, 2e-4, 3e-4]) is None          # rows 2..3: two
     assert settlementlaws.settlementLaw(2e-4 + 5e-5 * np.log(n))['b'] == pytest.approx(5e-5, rel=1e-9)
+
+
+def test_a_bed_that_stopped_settling_adds_nothing_for_its_jumped_cycles():
+    """Settled 0.1 mm in its first 4 cycles, then not at all for 8: the recent half (rows 6..12) has b = 0, where a
+    law over every row would extrapolate the early settling."""
+    s = np.array([0.25, 0.5, 0.75, 1.0] + [1.0] * 8) * 1e-4
+    N = np.arange(1, 13) * 10
+    assert settlementlaws.settlementJumped(N, s)[-1] == pytest.approx(0.0, abs=1e-15)
+    assert settlementlaws.fitLaws(np.arange(1, 13), s)['log']['b'] > 1e-5
