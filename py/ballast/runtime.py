@@ -19,12 +19,14 @@ the experiment itself) is registered here:
 A state saved by an older version (before this document, several ``ballast.*`` keys) is refused with
 :class:`StateFormatError`: one line saying why.
 """
+import base64
 import builtins
 import json
 import re
 import sys
 import uuid
 
+import numpy as np
 from yade import O
 from yade.wrapper import Omega, PyRunner
 
@@ -252,6 +254,16 @@ class _Resolver:
 
     def __call__(self, oid):
         return None if oid is None else self._build(oid)
+
+
+def packArray(a):
+    """An array of a saved state, bitwise: base64 of its float64 bytes (None stays None)."""
+    return None if a is None else base64.b64encode(np.ascontiguousarray(a, dtype=float).tobytes()).decode('ascii')
+
+
+def unpackArray(s):
+    """packArray's text back as a flat float64 array (a copy, writable; None stays None)."""
+    return None if s is None else np.frombuffer(base64.b64decode(s), dtype=float).copy()
 
 
 def ref(obj):

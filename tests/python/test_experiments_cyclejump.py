@@ -77,16 +77,23 @@ def test_the_settlement_of_a_jump_comes_from_the_log_law_of_the_simulated_cycles
     np.testing.assert_array_equal(settlementJumped(N, later)[:-1], got[:-1])
 
 
-def test_the_jumpers_state_comes_back_whole(monkeypatch):
+def jumperOnGrain(monkeypatch, **kw):
+    """The fatigue grain and a jumper for a run of 100 cycles: (grain, engine, jumper)."""
     g, crush = fatigueGrain(monkeypatch)
-    j = CycleJumper(window=3, steady=0.2, maxDamage=0.99, margin=1, growth=1000.0)
+    j = CycleJumper(steady=0.2, maxDamage=0.99, growth=1000.0, **kw)
     j.target = 100
+    return g, crush, j
+
+
+def test_the_jumpers_state_comes_back_whole(monkeypatch):
+    g, crush, j = jumperOnGrain(monkeypatch, window=3, margin=1, after=2)
     for cycle in range(1, 5):
         O.run(PER_CYCLE, True)
         plan = j.cycleEnded(crush, [g], cycle, 1e-4 * cycle, False)
     assert plan is not None
     back = CycleJumper.fromState(j.state())
-    for k in ('window', 'steady', 'maxDamage', 'margin', 'target', 'ids', 'direct', 'jumps', 'jumped', 'extrapolated'):
+    for k in ('window', 'steady', 'maxDamage', 'margin', 'growth', 'after', 'target', 'ids', 'direct', 'jumps',
+              'jumped', 'extrapolated', 'on'):
         assert getattr(back, k) == getattr(j, k), k
     np.testing.assert_array_equal(back.last, j.last)
     assert all(np.array_equal(a, b) for a, b in zip(back.increments, j.increments))
@@ -94,9 +101,7 @@ def test_the_jumpers_state_comes_back_whole(monkeypatch):
 
 
 def test_a_crush_or_a_new_grain_restarts_the_window(monkeypatch):
-    g, crush = fatigueGrain(monkeypatch)
-    j = CycleJumper(window=2, steady=0.2, maxDamage=0.99, margin=0, growth=1000.0)
-    j.target = 100
+    g, crush, j = jumperOnGrain(monkeypatch, window=2, margin=0)
     for cycle in range(1, 3):
         O.run(PER_CYCLE, True)
         assert j.cycleEnded(crush, [g], cycle, 0.0, False) is None

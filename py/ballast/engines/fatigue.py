@@ -2,11 +2,9 @@
 damage D [-], the running extreme of s = sigma_e / f_t [-], rising (1/0) and the damaging peaks;
 the Basquin-Miner update is the C++ core's ``fatigueCheck``. Beside it, each grain's largest s since it was
 last taken (what cycle jumping reads at each cycle's end, docs/cycles.md)."""
-import base64
-
 import numpy as np
 
-from .. import _ballast
+from .. import _ballast, runtime
 
 FRESH = (0.0, 0.0, 1.0, 0.0)  # a new grain: undamaged, no extreme yet, rising, no peak
 
@@ -75,13 +73,13 @@ class FatigueState:
             self.peaksGrown(len(self.rows))[ids] = 0.0
 
     def state(self):
-        """Bitwise: base64 of the float64 arrays (None before the first check)."""
-        return None if self.rows is None else base64.b64encode(np.ascontiguousarray(self.rows).tobytes()).decode('ascii')
+        """Bitwise (runtime.packArray; None before the first check)."""
+        return runtime.packArray(self.rows)
 
     def peaksState(self):
-        return None if self.peaks is None else base64.b64encode(np.ascontiguousarray(self.peaks).tobytes()).decode('ascii')
+        return runtime.packArray(self.peaks)
 
     def setState(self, s, peaks=None):
         """The arrays back (states saved before peaks were kept have none: they start at 0)."""
-        self.rows = None if s is None else np.frombuffer(base64.b64decode(s), dtype=float).reshape(-1, 4).copy()
-        self.peaks = None if peaks is None else np.frombuffer(base64.b64decode(peaks), dtype=float).copy()
+        self.rows = None if s is None else runtime.unpackArray(s).reshape(-1, 4)
+        self.peaks = runtime.unpackArray(peaks)

@@ -9,8 +9,6 @@ the law s = a + b ln n fitted to the simulated cycles (ballast.settlementlaws.se
 The experiment owns the cycle count and the states: it calls :meth:`CycleJumper.cycleEnded` at each simulated
 cycle's end, and when that returns a plan, :meth:`CycleJumper.apply` at the start of the next step (where a
 saved state resumes exactly), saving the states before and after."""
-import base64
-
 import numpy as np
 import pandas as pd
 
@@ -23,12 +21,11 @@ LOG_COLUMNS = ('jump', 'cycle', 'cycles', 'to', 'limit', 'grain', 'maxRate', 'ma
 
 
 def _pack(a):
-    return None if a is None else {'shape': list(a.shape), 'data': base64.b64encode(
-        np.ascontiguousarray(a, dtype=float).tobytes()).decode('ascii')}
+    return None if a is None else {'shape': list(a.shape), 'data': runtime.packArray(a)}
 
 
 def _unpack(s):
-    return None if s is None else np.frombuffer(base64.b64decode(s['data']), dtype=float).reshape(s['shape']).copy()
+    return None if s is None else runtime.unpackArray(s['data']).reshape(s['shape'])
 
 
 @runtime.persistent('CycleJumper')
