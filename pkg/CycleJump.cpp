@@ -9,7 +9,7 @@
 namespace ballast {
 
 CycleJumpParameters CycleJumpParameters::checked(double window, double steady, double maxDamage, double margin,
-                                                 double growth, double endurance)
+                                                 double growth, double endurance, double driftNoise)
 {
 	// braces: checked in the order written
 	return CycleJumpParameters{static_cast<long>(requireInRange(ranges::jumpWindow, "window", window)),
@@ -17,7 +17,8 @@ CycleJumpParameters CycleJumpParameters::checked(double window, double steady, d
 	                           requireInRange(ranges::jumpMaxDamage, "maxDamage", maxDamage),
 	                           static_cast<long>(requireInRange(ranges::jumpMargin, "margin", margin)),
 	                           requireInRange(ranges::jumpGrowth, "growth", growth),
-	                           requireInRange(ranges::fatigueEndurance, "endurance", endurance)};
+	                           requireInRange(ranges::fatigueEndurance, "endurance", endurance),
+	                           requireInRange(ranges::jumpDriftNoise, "driftNoise", driftNoise)};
 }
 
 const char* jumpLimitName(JumpLimit limit)
@@ -68,8 +69,17 @@ JumpPlan planJump(const CycleJumpParameters& p, long n, const double* damage, co
 			sMax = std::max(sMax, peaks[k * n + g]);
 			(k < h ? first : second) += peaks[k * n + g];
 		}
+		first /= h;
+		second /= (W - h);
+		// the scatter about the halves' means, pooled (W - 2 degrees of freedom; none in a window of 2)
+		double squares = 0;
+		for (long k = 0; k < W; ++k) {
+			const double e = peaks[k * n + g] - (k < h ? first : second);
+			squares += e * e;
+		}
+		const double spread = W > 2 ? std::sqrt(squares / (W - 2) * (1.0 / h + 1.0 / (W - h))) : 0.0;
 		// the halves' centres lie W / 2 cycles apart
-		const double drift = (second / (W - h) - first / h) / (0.5 * W);
+		const double drift = (second - first - p.driftNoise * spread) / (0.5 * W);
 		rate[g]            = r;
 		plan.maxRate       = std::max(plan.maxRate, r);
 		if (sMax < p.endurance && drift > 0) bound(std::floor((p.endurance - sMax) / drift), JumpLimit::endurance, g);

@@ -3,7 +3,9 @@
 // directly simulated cycles each grain's damage D (Fatigue.hpp) grew at the rate r = (D_W - D_0) / W per
 // cycle; the rates of the window's two halves, a and b, tell how steady it is. s_p is a grain's largest
 // stress ratio s = sigma_e / f_t in the window and d the drift of its peaks per cycle (the mean peak of the
-// second half less that of the first, over W / 2 cycles). The jump DN is the largest number of cycles for which
+// second half less that of the first, over W / 2 cycles) less `driftNoise` standard errors of that difference
+// (from the scatter of the peaks about their halves' means): peaks that only scatter do not drift. The jump DN is
+// the largest number of cycles for which
 //   DN              <= growth N             the count N grows by at most that factor: cycles are simulated
 //                                           again in every stretch of log N, where the bed may change
 //   DN r            <= maxDamage            no grain's damage changes by more than maxDamage
@@ -19,23 +21,26 @@
 namespace ballast {
 
 // The parameters, each within its range (InputCheck.hpp: jumpWindow, jumpSteady, jumpMaxDamage, jumpMargin,
-// jumpGrowth, and fatigueEndurance): `checked` is the only way to build them.
+// jumpGrowth, fatigueEndurance, jumpDriftNoise): `checked` is the only way to build them.
 class CycleJumpParameters {
 public:
 	const long   window;     // directly simulated cycles whose damage gives the rate [cycles]
 	const double steady;     // allowed uncertainty of a jump's damage, as a fraction of maxDamage [-]
 	const double maxDamage;  // largest change of any grain's damage in one jump [-]
 	const long   margin;     // simulated cycles left before the first cycle a grain is predicted to fail in [cycles]
-	const double growth;     // largest jump as a multiple of the cycles counted so far [-]
-	const double endurance;  // the fatigue law's endurance ratio: peaks below it do no damage [-]
+	const double growth;      // largest jump as a multiple of the cycles counted so far [-]
+	const double endurance;   // the fatigue law's endurance ratio: peaks below it do no damage [-]
+	const double driftNoise;  // a drift of the peaks counts beyond this many standard errors [-]
 
 	// ArgumentError naming the first parameter out of its range, in the order of the arguments.
 	static CycleJumpParameters checked(double window, double steady, double maxDamage, double margin, double growth,
-	                                   double endurance);
+	                                   double endurance, double driftNoise);
 
 private:
-	CycleJumpParameters(long window_, double steady_, double maxDamage_, long margin_, double growth_, double endurance_)
-	        : window(window_), steady(steady_), maxDamage(maxDamage_), margin(margin_), growth(growth_), endurance(endurance_)
+	CycleJumpParameters(long window_, double steady_, double maxDamage_, long margin_, double growth_, double endurance_,
+	                    double driftNoise_)
+	        : window(window_), steady(steady_), maxDamage(maxDamage_), margin(margin_), growth(growth_),
+	          endurance(endurance_), driftNoise(driftNoise_)
 	{
 	}
 };

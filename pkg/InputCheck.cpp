@@ -98,6 +98,7 @@ namespace ranges {
 	const ParameterRange jumpMaxDamage{"jumpMaxDamage", 0, 1, false, false, false, false, "a number in (0, 1)"};
 	const ParameterRange jumpMargin{"jumpMargin", 0, 10000, true, true, true, false, "an integer in [0, 10000]"};
 	const ParameterRange jumpGrowth{"jumpGrowth", 0, 1000, false, true, false, false, "a number in (0, 1000]"};
+	const ParameterRange jumpDriftNoise{"jumpDriftNoise", 0, 100, true, true, false, false, "a number in [0, 100]"};
 }  // namespace ranges
 
 const std::vector<const ParameterRange*>& parameterRanges()
@@ -105,7 +106,7 @@ const std::vector<const ParameterRange*>& parameterRanges()
 	static const std::vector<const ParameterRange*> all = {
 	        &ranges::ft0,  &ranges::m, &ranges::rMin, &ranges::seed, &ranges::weibullModulus, &ranges::fatigueExponent,
 	        &ranges::fatigueEndurance, &ranges::fatigueHysteresis, &ranges::strength, &ranges::jumpWindow, &ranges::jumpSteady,
-	        &ranges::jumpMaxDamage, &ranges::jumpMargin, &ranges::jumpGrowth};
+	        &ranges::jumpMaxDamage, &ranges::jumpMargin, &ranges::jumpGrowth, &ranges::jumpDriftNoise};
 	return all;
 }
 

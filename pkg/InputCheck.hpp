@@ -64,6 +64,7 @@ namespace ranges {
 	extern const ParameterRange jumpMaxDamage;      // [-]
 	extern const ParameterRange jumpMargin;         // [cycles]
 	extern const ParameterRange jumpGrowth;         // [-]
+	extern const ParameterRange jumpDriftNoise;     // [standard errors]
 }  // namespace ranges
 
 // Every range above, in the order of the list.

@@ -317,6 +317,10 @@ CYCLE_JUMP = {
     'jumpGrowth': Param(1.0, '-', 'a jump takes the cycle count N to at most (1 + jumpGrowth) N: cycles are simulated '
                         'again in every stretch of log N, where the bed may change (1: at most doubling)',
                         *coreRange('jumpGrowth')),
+    'jumpDriftNoise': Param(2.0, '-', 'a grain below the endurance ratio whose peaks rise between the window\'s halves '
+                            'limits a jump to the cycles it needs to reach it, the rise counted beyond this many standard '
+                            'errors of it (from the peaks\' scatter within the halves; 0: the whole rise)',
+                            *coreRange('jumpDriftNoise')),
     'jumpAfter': Param(0, 'cycles', 'no jump before this cycle: the cycles a bed needs to shake down, simulated',
                        intBetween(0, 10 ** 9), 'an integer in [0, 10^9]'),
 }

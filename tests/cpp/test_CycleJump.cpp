@@ -19,9 +19,9 @@ namespace {
 const long kFar = 1000000;  // [cycles] a count whose growth bound never binds here
 
 CycleJumpParameters params(long window = 4, double steady = 0.1, double maxDamage = 1.0 - 1e-9, long margin = 0,
-                           double growth = 1000, double endurance = 0.5)
+                           double growth = 1000, double endurance = 0.5, double driftNoise = 0)
 {
-	return CycleJumpParameters::checked(window, steady, maxDamage, margin, growth, endurance);
+	return CycleJumpParameters::checked(window, steady, maxDamage, margin, growth, endurance, driftNoise);
 }
 
 // One grain's damage over a window of W cycles growing by `rate` a cycle from D0.
@@ -153,6 +153,34 @@ TEST(CycleJump, AGrainDriftingUpTowardsTheEnduranceRatioBoundsTheJump)
 	EXPECT_EQ(plan(params(), std::vector<double>(5, 0.0), {0.42, 0.42, 0.40, 0.40}, kFar, 777).limit, JumpLimit::remaining);
 }
 
+TEST(CycleJump, PeaksThatOnlyScatterDoNotDrift)
+{
+	// peaks 0.38, 0.42 | 0.40, 0.44 (W = 4, h = 2): the means 0.40 and 0.42 differ by 0.02; about them the peaks
+	// scatter by +-0.02, pooled variance 4 (0.02^2) / (W - 2) = 0.0008, the difference's standard error
+	// sqrt(0.0008 (1/2 + 1/2)) = 0.028284. driftNoise 0: d = 0.01 a cycle, (0.5 - 0.44) / 0.01 = 6 cycles (5 or 6
+	// by rounding); 0.5: d = (0.02 - 0.014142) / 2 = 0.0029289, floor(0.06 / 0.0029289) = floor(20.485) = 20;
+	// 2: 0.02 lies within 2 standard errors, no drift, no bound
+	const std::vector<double> noisy{0.38, 0.42, 0.40, 0.44}, none(5, 0.0);
+	JumpPlan                  j = plan(params(4, 0.1, 0.05, 0, 1000, 0.5, 0), none, noisy, kFar, 100000);
+	EXPECT_EQ(j.limit, JumpLimit::endurance);
+	EXPECT_GE(j.cycles, 5);
+	EXPECT_LE(j.cycles, 6);
+	j = plan(params(4, 0.1, 0.05, 0, 1000, 0.5, 0.5), none, noisy, kFar, 100000);
+	EXPECT_EQ(j.limit, JumpLimit::endurance);
+	EXPECT_EQ(j.cycles, 20);
+	j = plan(params(4, 0.1, 0.05, 0, 1000, 0.5, 2), none, noisy, kFar, 100000);
+	EXPECT_EQ(j.limit, JumpLimit::remaining);
+	EXPECT_EQ(j.cycles, 100000);
+	// a drift well beyond the scatter still bounds it: 0.399, 0.401 | 0.419, 0.421, standard error sqrt(2e-6) =
+	// 0.0014142, d = (0.02 - 2 0.0014142) / 2 = 0.0085858, floor((0.5 - 0.421) / 0.0085858) = floor(9.2012) = 9
+	j = plan(params(4, 0.1, 0.05, 0, 1000, 0.5, 2), none, {0.399, 0.401, 0.419, 0.421}, kFar, 100000);
+	EXPECT_EQ(j.limit, JumpLimit::endurance);
+	EXPECT_EQ(j.cycles, 9);
+	// a window of 2 has no scatter to measure: the drift counts whole
+	EXPECT_EQ(plan(params(2, 0.1, 0.05, 0, 1000, 0.5, 2), std::vector<double>(3, 0.0), {0.40, 0.42}, kFar, 100000).cycles,
+	          static_cast<long>(std::floor((0.5 - 0.42) / (0.02 / 1.0))));
+}
+
 TEST(CycleJump, TheCountGrowsByAtMostTheGrowthFactor)
 {
 	// no damage, cycle 30, growth 1: at most 30 more (the count at most doubles); growth 0.5: 15
@@ -184,19 +212,21 @@ TEST(CycleJump, AGrainAlreadyPastItsFailureAllowsNoJump)
 
 TEST(CycleJump, BadInputIsRefusedNamingIt)
 {
-	EXPECT_EQ(messageOf([] { CycleJumpParameters::checked(1, 0.1, 0.05, 0, 1, 0.5); }),
+	EXPECT_EQ(messageOf([] { CycleJumpParameters::checked(1, 0.1, 0.05, 0, 1, 0.5, 2); }),
 	          "window: expected an integer in [2, 10000], got 1");
-	EXPECT_EQ(messageOf([] { CycleJumpParameters::checked(4.5, 0.1, 0.05, 0, 1, 0.5); }),
+	EXPECT_EQ(messageOf([] { CycleJumpParameters::checked(4.5, 0.1, 0.05, 0, 1, 0.5, 2); }),
 	          "window: expected an integer in [2, 10000], got 4.5");
-	EXPECT_EQ(messageOf([] { CycleJumpParameters::checked(4, 0, 0.05, 0, 1, 0.5); }), "steady: expected a number in (0, 1], got 0");
-	EXPECT_EQ(messageOf([] { CycleJumpParameters::checked(4, 0.1, 1, 0, 1, 0.5); }),
+	EXPECT_EQ(messageOf([] { CycleJumpParameters::checked(4, 0, 0.05, 0, 1, 0.5, 2); }), "steady: expected a number in (0, 1], got 0");
+	EXPECT_EQ(messageOf([] { CycleJumpParameters::checked(4, 0.1, 1, 0, 1, 0.5, 2); }),
 	          "maxDamage: expected a number in (0, 1), got 1");
-	EXPECT_EQ(messageOf([] { CycleJumpParameters::checked(4, 0.1, 0.05, -1, 1, 0.5); }),
+	EXPECT_EQ(messageOf([] { CycleJumpParameters::checked(4, 0.1, 0.05, -1, 1, 0.5, 2); }),
 	          "margin: expected an integer in [0, 10000], got -1");
-	EXPECT_EQ(messageOf([] { CycleJumpParameters::checked(4, 0.1, 0.05, 0, 0, 0.5); }),
+	EXPECT_EQ(messageOf([] { CycleJumpParameters::checked(4, 0.1, 0.05, 0, 0, 0.5, 2); }),
 	          "growth: expected a number in (0, 1000], got 0");
-	EXPECT_EQ(messageOf([] { CycleJumpParameters::checked(4, 0.1, 0.05, 0, 1, 1); }),
+	EXPECT_EQ(messageOf([] { CycleJumpParameters::checked(4, 0.1, 0.05, 0, 1, 1, 2); }),
 	          "endurance: expected a number in [0, 1), got 1");
+	EXPECT_EQ(messageOf([] { CycleJumpParameters::checked(4, 0.1, 0.05, 0, 1, 0.5, -1); }),
+	          "driftNoise: expected a number in [0, 100], got -1");
 	const std::vector<double> falling{0, 0.01, 0.02, 0.005, 0.03};
 	EXPECT_EQ(messageOf([&] { plan(params(), falling, steadyPeaks(4, {0.6}), kFar, 10); })
 	                  .rfind("damage: grain 0's damage falls from 0.02 to 0.005", 0),

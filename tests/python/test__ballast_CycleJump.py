@@ -6,7 +6,7 @@ import pytest
 
 from ballast import _ballast as B
 
-LAW = dict(window=4, steady=0.2, maxDamage=0.99, margin=1, growth=1000.0, endurance=0.5)
+LAW = dict(window=4, steady=0.2, maxDamage=0.99, margin=1, growth=1000.0, endurance=0.5, driftNoise=2.0)
 
 
 def test_a_steady_grain_jumps_to_the_last_cycle_it_survives():
@@ -25,6 +25,16 @@ def test_without_damage_the_count_at_most_doubles_at_growth_1():
         40, 'growth', -1)
     assert B.cycleJumpPlan(np.zeros((3, 4)), np.zeros((2, 4)), 400, 99, **dict(LAW, window=2, growth=1.0))[:3] == (
         99, 'remaining', -1)
+
+
+def test_peaks_that_only_scatter_do_not_bound_the_jump():
+    """Peaks 0.38, 0.42 | 0.40, 0.44: the halves' means differ by 0.02, the difference's standard error is
+    sqrt(4 0.02^2 / 2 (1/2 + 1/2)) = 0.028284; driftNoise 0.5: d = (0.02 - 0.014142) / 2 a cycle reaches the endurance
+    ratio 0.5 from 0.44 in floor(20.485) = 20 cycles; at 2 the difference is noise, no bound."""
+    peaks = np.array([[0.38], [0.42], [0.40], [0.44]])
+    assert B.cycleJumpPlan(np.zeros((5, 1)), peaks, 10 ** 6, 1000, **dict(LAW, driftNoise=0.5))[:3] == (
+        20, 'endurance', 0)
+    assert B.cycleJumpPlan(np.zeros((5, 1)), peaks, 10 ** 6, 1000, **LAW)[:3] == (1000, 'remaining', -1)
 
 
 @pytest.mark.parametrize('damage,peaks,error,match', [

@@ -553,7 +553,7 @@ def matricesToArray(g):
     return kw, check
 
 
-def cycleJumpRef(D, S, cycle, remaining, W, steady, maxDamage, margin, growth, endurance):
+def cycleJumpRef(D, S, cycle, remaining, W, steady, maxDamage, margin, growth, endurance, driftNoise):
     """CycleJump.hpp's bounds, written again: (cycles, limit, grain, maxRate, rate)."""
     h, best, limit, grain = W // 2, float(remaining), 'remaining', -1
     if math.floor(growth * cycle) < best:
@@ -567,7 +567,12 @@ def cycleJumpRef(D, S, cycle, remaining, W, steady, maxDamage, margin, growth, e
                 first += S[c, k]
             else:
                 second += S[c, k]
-        drift = (second / (W - h) - first / h) / (0.5 * W)
+        first, second = first / h, second / (W - h)
+        squares = 0.0
+        for c in range(W):
+            squares += (S[c, k] - (first if c < h else second)) ** 2
+        spread = math.sqrt(squares / (W - 2) * (1.0 / h + 1.0 / (W - h))) if W > 2 else 0.0
+        drift = (second - first - driftNoise * spread) / (0.5 * W)
         bounds = []
         if sMax < endurance and drift > 0:
             bounds.append((math.floor((endurance - sMax) / drift), 'endurance'))
@@ -593,7 +598,7 @@ def cycleJumpPlan(g):
               remaining=g.number(float(g.rng.integers(0, 10 ** 6))), window=g.number(float(W)),
               steady=g.number(g.rng.uniform(0.01, 1)), maxDamage=g.number(g.rng.uniform(0.001, 0.99)),
               margin=g.number(float(g.rng.integers(0, 4))), growth=g.number(g.pick([0.5, 1.0, 10.0, 1000.0])),
-              endurance=g.number(g.rng.uniform(0, 0.9)))
+              endurance=g.number(g.rng.uniform(0, 0.9)), driftNoise=g.number(g.pick([0.0, 0.5, 2.0, 100.0])))
 
     def check(out):
         cycles, limit, grain, maxRate, rate = out
@@ -601,7 +606,8 @@ def cycleJumpPlan(g):
         if x['damage'].shape != (W + 1, n) or not moderate(x['damage'], x['peaks']):
             return False
         want = cycleJumpRef(x['damage'], x['peaks'], float(x['cycle']), float(x['remaining']), W, float(x['steady']),
-                            float(x['maxDamage']), float(x['margin']), float(x['growth']), float(x['endurance']))
+                            float(x['maxDamage']), float(x['margin']), float(x['growth']), float(x['endurance']),
+                            float(x['driftNoise']))
         assert (cycles, limit, grain) == want[:3] and rate.shape == (n,)
         close(rate, want[4], atol=1e-300)
         assert maxRate == pytest.approx(want[3], rel=1e-12, abs=1e-300)
