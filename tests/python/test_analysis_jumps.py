@@ -79,6 +79,31 @@ def test_pairs_agree_within_the_stated_tolerances_and_not_beyond(tmp_path):
     assert os.path.getsize(out) > 0
 
 
+def test_a_long_run_is_compared_with_the_direct_run_over_the_cycles_both_cover(tmp_path):
+    """Seed 1: direct over 10 cycles, crushes in cycles 3 and 7; the long run simulates 1-4, 8, 9, 12, 100 with
+    crushes in cycles 3 (2.5 T), 8 (4.5 T) and 100 (7.5 T): over cycles 1-10 both crush twice (3, 7 against 3,
+    8: within 2 cycles); its settlement at cycle 9 (its last simulated cycle up to 10) is 6e-4 + b ln(9 / 6);
+    a run of seed 2 without a direct run of its seed is not compared."""
+    root = study(str(tmp_path), [
+        ('d1', 1, 10, False, range(1, 11), [2.5 * T, 6.5 * T], None, 20.0),
+        ('long1', 1, 100, True, [1, 2, 3, 4, 8, 9, 12, 100], [2.5 * T, 4.5 * T, 7.5 * T], None, 5.0),
+        ('long2', 2, 100, True, [1, 2, 100], [], None, 5.0)])
+    t = jumps.covered(root)
+    assert list(t.runId) == ['long1']
+    r = t.iloc[0]
+    assert (r.covered, r.settledAt, r.crushesDirect, r.crushesJump) == (10, 9, 2, 2)
+    assert (r.crush1Direct, r.crush1Jump, r.crush2Direct, r.crush2Jump) == (3, 3, 7, 8)
+    assert r.crush1Agrees and r.crush2Agrees and r.crush3Agrees and r.crushesAgree
+    assert r.settlementJump == pytest.approx(law(6, 9), rel=1e-9) and r.cpuRatio == pytest.approx(0.25)
+    assert r.settlementAgrees == (abs(law(6, 9) - 1e-3) <= 0.25e-3)
+    # five crushes in cycle 9 of the long run: 9 against 3 is beyond 2 cycles and 10 %, 5 against 2 beyond 2 and 20 %
+    root2 = study(str(tmp_path / 'b'), [
+        ('d1', 1, 10, False, range(1, 11), [2.5 * T, 6.5 * T], None, 20.0),
+        ('long1', 1, 100, True, [1, 2, 3, 4, 8, 9, 12, 100], [5.5 * T] * 5, None, 5.0)])
+    r = jumps.covered(root2).iloc[0]
+    assert r.crushesJump == 5 and not r.crushesAgree and r.crush1Jump == 9 and not r.crush1Agrees
+
+
 def law(n, N):
     """The settlement after the n-th simulated cycle, cycle N of the count, of these records: 1e-4 n plus the
     jumped cycles' b ln(N / n), b of s = a + b ln k fitted to k = ceil(n / 2)..n."""
@@ -101,7 +126,7 @@ def test_the_command_line_writes_its_files_and_refuses_a_folder_that_is_no_study
                                        ('j1', 1, 10, True, [1, 2, 3, 4, 8, 9, 10], [2.5 * T])])
     out = str(tmp_path / 'out')
     assert main([root, '--out', out]) == 0
-    for name in ('validation.csv', 'long.csv', 'validation.json', 'jumps.png'):
+    for name in ('validation.csv', 'covered.csv', 'long.csv', 'validation.json', 'jumps.png'):
         assert os.path.getsize(os.path.join(out, name)) > 0
     with open(os.path.join(out, 'validation.json')) as fh:
         assert json.load(fh)['agree']['crush1Agrees'] == '1 of 1'

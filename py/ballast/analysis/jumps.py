@@ -1,8 +1,9 @@
 """Cycle jumping against direct simulation (docs/cycles.md, "Validation"), for any cyclic experiment whose runs
 write cycles.csv (cycle, t, settlement; with jumping also settlementJumped) and crushes (t): each run of a study
 simulated directly is paired with the run of the same seed and cycles made with jumping, and compared on the
-cycles of the first crushes, the crushes and the settlement after the last cycle, and their CPU; the long runs
-(jumping only) give settlement and crushes against log N. Reads the studies with ballast.study.data. No YADE."""
+cycles of the first crushes, the crushes and the settlement after the last cycle, and their CPU; a jumping run
+longer than the direct runs of its seed is compared with the longest of them over the cycles both cover; the long
+runs (jumping only) give settlement and crushes against log N. Reads the studies with ballast.study.data. No YADE."""
 import numpy as np
 import pandas as pd
 
@@ -56,6 +57,21 @@ def _runs(path, reference=None):
     return pd.DataFrame(rows)
 
 
+def _agreement(row, cd, cj):
+    """The first FIRST crush cycles cd (direct) and cj (jumping) into row, each with whether it agrees, and whether
+    the crushes and the settlement agree (row's crushesDirect, crushesJump, settlementDirect, settlementJump)."""
+    for k in range(FIRST):
+        a = int(cd[k]) if k < len(cd) else None
+        b = int(cj[k]) if k < len(cj) else None
+        row['crush%dDirect' % (k + 1)], row['crush%dJump' % (k + 1)] = a, b
+        row['crush%dAgrees' % (k + 1)] = (a is None and b is None) or (
+            a is not None and b is not None and _within(b, a, TOL_CYCLE))
+    row['crushesAgree'] = _within(row['crushesJump'], row['crushesDirect'], TOL_CRUSHES)
+    row['settlementAgrees'] = _within(row['settlementJump'], row['settlementDirect'], TOL_SETTLEMENT)
+    row['cpuRatio'] = row['cpuJump'] / row['cpuDirect']
+    return row
+
+
 def compare(path, reference=None):
     """Per seed and cycle count run both ways: a DataFrame with, for direct (d) and jumping (j), the cycles
     simulated, the CPU [s], the first FIRST crush cycles, the crushes and the settlement [m] after the last cycle,
@@ -67,21 +83,44 @@ def compare(path, reference=None):
         if set(g.jump) != {False, True}:
             continue
         d, j = (g[g.jump == flag].iloc[0].run for flag in (False, True))
-        cd, cj = crushCycles(d), crushCycles(j)
         row = {'seed': seed, 'cycles': cycles, 'simulatedDirect': len(d.cycles), 'simulatedJump': len(j.cycles),
                'cpuDirect': d.summary['cpuSeconds'], 'cpuJump': j.summary['cpuSeconds'],
                'crushesDirect': int(d.summary['nCrushed']), 'crushesJump': int(j.summary['nCrushed']),
                'settlementDirect': _settlement(d), 'settlementJump': _settlement(j)}
-        for k in range(FIRST):
-            a = int(cd[k]) if k < len(cd) else None
-            b = int(cj[k]) if k < len(cj) else None
-            row['crush%dDirect' % (k + 1)], row['crush%dJump' % (k + 1)] = a, b
-            row['crush%dAgrees' % (k + 1)] = (a is None and b is None) or (
-                a is not None and b is not None and _within(b, a, TOL_CYCLE))
-        row['crushesAgree'] = _within(row['crushesJump'], row['crushesDirect'], TOL_CRUSHES)
-        row['settlementAgrees'] = _within(row['settlementJump'], row['settlementDirect'], TOL_SETTLEMENT)
-        row['cpuRatio'] = row['cpuJump'] / row['cpuDirect']
-        out.append(row)
+        out.append(_agreement(row, crushCycles(d), crushCycles(j)))
+    return pd.DataFrame(out)
+
+
+def covered(path, reference=None):
+    """Every jumping run longer than the longest direct run of its seed, compared with that run over the cycles
+    both cover (1 to the direct run's last cycle N_d): the first FIRST crush cycles, the crushes up to N_d, the
+    settlement at N_d (at settledAt, the jumping run's last simulated cycle up to N_d, its jumped cycles' included),
+    each with whether it agrees; the CPU of the whole jumping run against the direct run's (cpuRatio)."""
+    runs = _runs(path, reference)
+    out = []
+    for seed, g in runs.groupby('seed'):
+        direct = g[~g.jump]
+        if not len(direct):
+            continue
+        d = direct.loc[direct.cycles.idxmax()]
+        dr = d.run
+        Nd = int(dr.cycles.cycle.iloc[-1])
+        cd = crushCycles(dr)
+        for _, j in g[g.jump & (g.cycles > d.cycles)].sort_values('cycles').iterrows():
+            jr = j.run
+            c = jr.cycles
+            total = c.settlement + (settlementJumped(c.cycle, c.settlement) if 'jumped' in c else 0.0)
+            upTo = c.cycle.to_numpy() <= Nd
+            cj = crushCycles(jr)
+            cj = cj[cj <= Nd]
+            row = {'seed': seed, 'runId': j.runId, 'cycles': int(jr.summary['cycles']), 'covered': Nd,
+                   'settledAt': int(c.cycle[upTo].iloc[-1]) if upTo.any() else None,
+                   'simulatedDirect': len(dr.cycles), 'simulatedJump': len(c),
+                   'cpuDirect': dr.summary['cpuSeconds'], 'cpuJump': jr.summary['cpuSeconds'],
+                   'crushesDirect': int(np.sum(cd <= Nd)), 'crushesJump': len(cj),
+                   'settlementDirect': _settlement(dr),
+                   'settlementJump': float(total[upTo].iloc[-1]) if upTo.any() else float('nan')}
+            out.append(_agreement(row, cd[cd <= Nd], cj))
     return pd.DataFrame(out)
 
 
@@ -133,6 +172,6 @@ def figure(path, out, reference=None):
 
 
 def verdict(table):
-    """How many pairs agree on each compared quantity (of those compared)."""
+    """How many pairs agree on each compared quantity (of those compared), of compare's or covered's table."""
     cols = ['crush%dAgrees' % (k + 1) for k in range(FIRST)] + ['crushesAgree', 'settlementAgrees']
     return {c: '%d of %d' % (int(table[c].sum()), len(table)) for c in cols} if len(table) else {}
