@@ -139,19 +139,20 @@ def longRuns(path, atLeast=1000):
 
 
 def figure(path, out, reference=None):
-    """Settlement (jumped cycles' included) and crushes against log N: every run, direct solid, jumping dashed,
-    one colour per seed (the direct runs of reference too)."""
+    """Settlement (jumped cycles' included), crushes and the largest fatigue damage (where cycles.csv has it)
+    against log N: every run, direct solid, jumping dashed (dotted beyond 1 000 cycles), one colour per seed (the
+    direct runs of reference too)."""
     import matplotlib
     matplotlib.use('Agg')
     import matplotlib.pyplot as plt
     from ..study.files import saveFigure
     runs = _runs(path, reference)
-    fig, (ax, bx) = plt.subplots(2, 1, figsize=(7, 7.2), sharex=True)
+    fig, (ax, bx, cx) = plt.subplots(3, 1, figsize=(7, 9.6), sharex=True)
     seeds = sorted(runs.seed.unique())
     for _, r in runs.sort_values(['seed', 'cycles', 'jump']).iterrows():
         c = r.run.cycles
         total = c.settlement + (settlementJumped(c.cycle, c.settlement) if 'jumped' in c else 0.0)
-        colour = 'C%d' % seeds.index(r.seed)
+        colour = 'C%d' % (seeds.index(r.seed) % 10)
         style = '-' if not r.jump else ('--' if r.cycles <= 1000 else ':')
         label = 'seed %d, %s, %d cycles' % (r.seed, 'jumping' if r.jump else 'direct', r.cycles)
         ax.semilogx(c.cycle, 1e3 * total, style, color=colour, lw=1.2 if not r.jump else 1.0, label=label)
@@ -159,10 +160,13 @@ def figure(path, out, reference=None):
         if len(cc):
             n = np.sort(cc)
             bx.step(np.concatenate([[1], n]), np.arange(len(n) + 1), style, color=colour, where='post', lw=1.0)
+        if 'maxDamage' in c:
+            cx.semilogx(c.cycle, c.maxDamage, style, color=colour, lw=1.0)
     ax.set_ylabel('permanent settlement [mm]\n(jumped cycles extrapolated)')
     bx.set_ylabel('crushes so far')
-    bx.set_xlabel('load cycles N')
-    for a in (ax, bx):
+    cx.set_ylabel('largest fatigue damage D [-]')
+    cx.set_xlabel('load cycles N')
+    for a in (ax, bx, cx):
         a.grid(True, which='both', alpha=0.3)
     ax.legend(fontsize=6, ncol=2)
     ax.set_title('Cycle jumping against direct simulation: %s' % path.rstrip('/').split('/')[-1], fontsize=9)
