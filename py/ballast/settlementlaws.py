@@ -33,21 +33,40 @@ def recentHalf(n):
     return (n + 1) // 2
 
 
-def settlementLaw(settlements):
+def withoutSteps(settlements, changed=None):
+    """The settlements [m] of the simulated cycles less the steps of those in which the bed changed (a grain crushed
+    or abraded: changed, one flag a row): s_n - sum over changed rows k = 2..n of (s_k - s_{k-1}). A jump holds no
+    crush (the cycle a grain fails in is simulated), so the law it extrapolates is that of the cycles without one;
+    an avalanche's settling is not carried over thousands of jumped cycles. Row 1 (the seating) is kept. Without
+    changes the settlements themselves."""
+    s = np.asarray(settlements, float)
+    if changed is None:
+        return s
+    c = np.asarray(changed, bool)
+    if c.shape != s.shape:
+        raise ValueError('withoutSteps: %d flags for %d settlements' % (len(c), len(s)))
+    step = np.zeros(len(s))
+    step[1:] = np.where(c[1:], np.diff(s), 0.0)
+    return s - np.cumsum(step)
+
+
+def settlementLaw(settlements, changed=None):
     """The law s = a + b ln n fitted to the recent half of the simulated cycles' settlements [m] (the n-th simulated
-    cycle's at n, rows recentHalf(n)..n): {a, b, r2}, None below 3 rows."""
+    cycle's at n, rows recentHalf(n)..n), the steps of the cycles that changed the bed taken out (withoutSteps):
+    {a, b, r2}, None below 3 rows."""
     n = len(settlements)
     m = recentHalf(n)
     if n - m + 1 < 3:
         return None
-    return fitLaws(np.arange(m, n + 1), np.asarray(settlements, float)[m - 1:])['log']
+    return fitLaws(np.arange(m, n + 1), withoutSteps(settlements, changed)[m - 1:])['log']
 
 
-def settlementJumped(cycles, settlements):
+def settlementJumped(cycles, settlements, changed=None):
     """The settlement [m] the jumped cycles add at each simulated cycle: the n-th simulated cycle is cycle N of the
     count (cycles), the bed saw n, so b_n ln(N / n) with b_n of settlementLaw over the first n simulated settlements
-    (what was known then: a later crush does not move an earlier row); 0 without a law."""
-    s = np.asarray(settlements, float)
+    (what was known then: a later crush does not move an earlier row), the steps of the rows flagged in changed
+    taken out; 0 without a law."""
+    s = withoutSteps(settlements, changed)
     n = np.arange(1, len(s) + 1)
     x = np.log(n.astype(float))
     # least squares of s = a + b x over rows m..n, m = recentHalf(n), from running sums

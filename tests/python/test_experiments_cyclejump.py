@@ -65,14 +65,14 @@ def test_the_settlement_of_a_jump_comes_from_the_log_law_of_the_simulated_cycles
     e = j.jumps[0]   # after 5 simulated cycles: the law of rows 3..5
     assert e['settlementLawB'] == pytest.approx(1e-4, rel=1e-9) and e['settlementLawR2'] == pytest.approx(1, abs=1e-12)
     assert e['settlementJumped'] == pytest.approx(1e-4 * math.log(e['to'] / e['cycle']), rel=1e-9)
-    N = np.array([c for c, _ in j.direct])
+    N = np.array([d[0] for d in j.direct])
     n = np.arange(1, len(N) + 1)
-    assert N[-1] > n[-1]
-    got = settlementJumped(N, [s for _, s in j.direct])
+    assert N[-1] > n[-1] and not any(d[2] for d in j.direct[:-1])   # no crush before the last simulated cycle
+    got = settlementJumped(N, [d[1] for d in j.direct])
     assert np.all(got[:3] == 0)                                 # no law below 3 rows in the recent half
     np.testing.assert_allclose(got[3:], 1e-4 * np.log(N / n)[3:], rtol=1e-9, atol=1e-18)
     # causal: a settlement that jumps later does not move the earlier rows
-    later = [s for _, s in j.direct]
+    later = [d[1] for d in j.direct]
     later[-1] += 1.0
     np.testing.assert_array_equal(settlementJumped(N, later)[:-1], got[:-1])
 

@@ -7,7 +7,7 @@ runs (jumping only) give settlement and crushes against log N. Reads the studies
 import numpy as np
 import pandas as pd
 
-from ..settlementlaws import settlementJumped
+from .settlement import total
 from ..study.data import StudyRuns
 
 FIRST = 3   # the first crushes compared, by their cycle
@@ -33,8 +33,7 @@ def _settlement(run):
     """The settlement after the last cycle [m], the jumped cycles' worked out again from cycles.csv (as the code
     of today extrapolates them, whatever code made the run)."""
     c = run.cycles
-    extra = settlementJumped(c.cycle, c.settlement)[-1] if 'jumped' in c else 0.0
-    return float(c.settlement.iloc[-1] + extra)
+    return float(total(c).iloc[-1])
 
 
 def _within(a, b, tol):
@@ -109,7 +108,7 @@ def covered(path, reference=None):
         for _, j in g[g.jump & (g.cycles > d.cycles)].sort_values('cycles').iterrows():
             jr = j.run
             c = jr.cycles
-            total = c.settlement + (settlementJumped(c.cycle, c.settlement) if 'jumped' in c else 0.0)
+            settled = total(c)
             upTo = c.cycle.to_numpy() <= Nd
             cj = crushCycles(jr)
             cj = cj[cj <= Nd]
@@ -119,7 +118,7 @@ def covered(path, reference=None):
                    'cpuDirect': dr.summary['cpuSeconds'], 'cpuJump': jr.summary['cpuSeconds'],
                    'crushesDirect': int(np.sum(cd <= Nd)), 'crushesJump': len(cj),
                    'settlementDirect': _settlement(dr),
-                   'settlementJump': float(total[upTo].iloc[-1]) if upTo.any() else float('nan')}
+                   'settlementJump': float(settled[upTo].iloc[-1]) if upTo.any() else float('nan')}
             out.append(_agreement(row, cd[cd <= Nd], cj))
     return pd.DataFrame(out)
 
@@ -151,11 +150,10 @@ def figure(path, out, reference=None):
     seeds = sorted(runs.seed.unique())
     for _, r in runs.sort_values(['seed', 'cycles', 'jump']).iterrows():
         c = r.run.cycles
-        total = c.settlement + (settlementJumped(c.cycle, c.settlement) if 'jumped' in c else 0.0)
         colour = 'C%d' % (seeds.index(r.seed) % 10)
         style = '-' if not r.jump else ('--' if r.cycles <= 1000 else ':')
         label = 'seed %d, %s, %d cycles' % (r.seed, 'jumping' if r.jump else 'direct', r.cycles)
-        ax.semilogx(c.cycle, 1e3 * total, style, color=colour, lw=1.2 if not r.jump else 1.0, label=label)
+        ax.semilogx(c.cycle, 1e3 * total(c), style, color=colour, lw=1.2 if not r.jump else 1.0, label=label)
         cc = crushCycles(r.run)
         if len(cc):
             n = np.sort(cc)

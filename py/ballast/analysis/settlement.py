@@ -30,12 +30,26 @@ def curves(paths):
     return pd.concat(rows, ignore_index=True)
 
 
+def changedRows(cycles):
+    """Per row of cycles.csv whether a grain crushed or abraded in that cycle: the box's crushes and abrasions,
+    the oedometer's nCrushed and nAbraded (each a count in that cycle); None where the file has neither."""
+    for crushed, abraded in (('crushes', 'abrasions'), ('nCrushed', 'nAbraded')):
+        if crushed in cycles:
+            return (cycles[crushed] + (cycles[abraded] if abraded in cycles else 0)).to_numpy() > 0
+    return None
+
+
+def jumpedSettlement(cycles):
+    """The settlement [m] extrapolated over the cycles jumped before each row of a cycles.csv with cycle jumping
+    (worked out again from the rows, as the code of today does it: settlementlaws.settlementJumped)."""
+    return settlementJumped(cycles['cycle'], cycles['settlement'], changedRows(cycles))
+
+
 def total(cycles):
-    """The settlement [m] of each row of cycles.csv; with cycle jumping, the jumped cycles' extrapolation added
-    (worked out again from the rows, as the code of today does it)."""
+    """The settlement [m] of each row of cycles.csv; with cycle jumping, the jumped cycles' extrapolation added."""
     if 'jumped' not in cycles:
         return cycles['settlement']
-    return cycles['settlement'] + settlementJumped(cycles['cycle'], cycles['settlement'])
+    return cycles['settlement'] + jumpedSettlement(cycles)
 
 
 def summary(frame):

@@ -4,7 +4,8 @@ jumper measures each grain's fatigue damage rate, and where the C++ core (pkg/Cy
 of DN cycles every grain's damage is advanced by DN rates at once. Crushes are never extrapolated: the jump
 ends before the cycle the first grain would fail in. The grains do not move during a jump: the bed has seen
 n simulated cycles when the count says N, so the settlement of the jumped cycles is b ln(N / n), with b of
-the law s = a + b ln n fitted to the simulated cycles (ballast.settlementlaws.settlementJumped), reported apart.
+the law s = a + b ln n fitted to the simulated cycles without the steps of those with a crush or an abrasion
+(ballast.settlementlaws.settlementJumped), reported apart.
 
 The experiment owns the cycle count and the states: it calls :meth:`CycleJumper.cycleEnded` at each simulated
 cycle's end, and when that returns a plan, :meth:`CycleJumper.apply` at the start of the next step (where a
@@ -42,7 +43,8 @@ class CycleJumper:
         self.ids = []             # the grains of the window (body ids)
         self.last = None          # (2, n): their damage D and damaging peaks at the last cycle's end (after a jump)
         self.increments = []      # per simulated cycle of the window: (3, n) increments of D and peaks, the largest s
-        self.direct = []          # [cycle (with the jumped ones), simulated settlement [m]] of every simulated cycle
+        self.direct = []          # [cycle (with the jumped ones), simulated settlement [m], a grain crushed or abraded
+                                  # in it] of every simulated cycle (no third entry in states of before it: False)
         self.jumps = []           # one dict per jump (LOG_COLUMNS)
         self.jumped = 0           # cycles not simulated [cycles]
         self.extrapolated = 0.0   # settlement of the jumped cycles [m] as the last jump's law gave it
@@ -68,7 +70,7 @@ class CycleJumper:
         """A simulated cycle `cycle` (numbered with the jumped ones) ended with the simulated permanent settlement
         [m]; changed: a grain crushed or abraded in it. engine: the BallastCrushEngine with fatigue; ids: the
         grains. Returns the plan of a jump (also kept as pending) or None."""
-        self.direct.append([int(cycle), float(settlement)])
+        self.direct.append([int(cycle), float(settlement), bool(changed)])
         ids = [int(i) for i in ids]
         F = engine.fatigueState(ids)
         now = np.vstack([F[:, 0], F[:, 3]])
@@ -105,7 +107,7 @@ class CycleJumper:
         engine.advanceFatigue(ids, dD, dP)
         self.last = self.last + np.vstack([dD, dP])
         N0 = plan['cycle']
-        law = settlementLaw([s for _, s in self.direct])
+        law = settlementLaw([d[1] for d in self.direct], [len(d) > 2 and d[2] for d in self.direct])
         self.jumped += n
         ds = law['b'] * np.log((N0 + n) / N0) if law else 0.0   # what this jump adds to b ln(N / n)
         self.extrapolated += float(ds)

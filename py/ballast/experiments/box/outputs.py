@@ -85,7 +85,7 @@ def cycleTable(exp):
     cyc = pd.DataFrame(rec.cycles, columns=rec.CYCLE_COLUMNS)
     if j is not None:
         cyc['jumped'] = cyc.cycle.astype(int) - np.arange(1, len(cyc) + 1)
-        cyc['settlementJumped'] = settlementJumped(cyc.cycle, cyc.settlement)
+        cyc['settlementJumped'] = settlementJumped(cyc.cycle, cyc.settlement, cyc.crushes + cyc.abrasions > 0)
     return cyc
 
 

@@ -39,7 +39,6 @@ from ...study.files import writeAtomic
 from .. import chain, grains
 from .. import timestep
 from ..base import Experiment
-from ...settlementlaws import settlementJumped
 from .loading import MODES
 from .outputs import Outputs
 from .packing import StoredPacking
@@ -360,7 +359,7 @@ class Oedometer(Experiment):
         }
         if self.jumper is not None:   # cycle jumping: what was simulated, jumped and extrapolated
             rows = self.outputs.cycleRows
-            sj = float(settlementJumped([r[0] for r in rows], [r[2] for r in rows])[-1]) if rows else 0.0
+            sj = float(self.outputs.settlementJumped()[-1]) if rows else 0.0
             s.update({'cyclesSimulated': len(rows), 'cyclesJumped': self.jumper.jumped, 'jumps': len(self.jumper.jumps),
                       'settlementJumped': sj, 'settlementTotal': (rows[-1][2] if rows else 0.0) + sj})
         return s

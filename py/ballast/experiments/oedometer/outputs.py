@@ -168,6 +168,13 @@ class Outputs:
             if b is not None:
                 b.shape.color = self.grains.color(i)
 
+    def settlementJumped(self):
+        """Cycle jumping: the settlement [m] extrapolated over the cycles jumped before each row of cycles.csv
+        (ballast.settlementlaws.settlementJumped; a row whose crushed or abraded count grew changed the bed)."""
+        rows = self.cycleRows
+        changed = np.diff([0] + [r[4] + r[5] for r in rows]) > 0
+        return settlementJumped([r[0] for r in rows], [r[2] for r in rows], changed)
+
     def cycleEnd(self):
         """A row of cycles.csv: the cycle just ended, the permanent settlement (delta at the cycle's lowest
         force, its end), the resilient displacement (the largest delta within the cycle minus that: what the
@@ -191,7 +198,7 @@ class Outputs:
                                exp.counter('crush', 'maxDamage')))
         j = exp.jumper
         if j is not None:
-            jumpedSettlement = settlementJumped([r[0] for r in self.cycleRows], [r[2] for r in self.cycleRows])
+            jumpedSettlement = self.settlementJumped()
         lines = [','.join(CYCLE_COLUMNS + (('jumped', 'settlementJumped') if j is not None else ())) + '\n']
         for i, row in enumerate(self.cycleRows):
             prev = self.cycleRows[i - 1][4:6] if i else (0, 0)
@@ -323,7 +330,7 @@ class Outputs:
         fig, ax = plt.subplots(figsize=(7, 4.5))
         ax.semilogx(c[:, 0], c[:, 2] * 1e3, 'o-', color='C0', label='permanent settlement')
         if exp.jumper is not None and exp.jumper.jumps:   # the jumped cycles' settlement, extrapolated
-            ax.semilogx(c[:, 0], (c[:, 2] + settlementJumped(c[:, 0], c[:, 2])) * 1e3, 'x:', color='C0',
+            ax.semilogx(c[:, 0], (c[:, 2] + self.settlementJumped()) * 1e3, 'x:', color='C0',
                         label="with the jumped cycles' settlement (a + b ln n)")
             ax.legend(fontsize=8, loc='upper left')
         ax.set_xlabel('load cycles N')
