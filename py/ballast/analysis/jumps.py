@@ -125,14 +125,15 @@ def covered(path, reference=None):
 
 def longRuns(path, atLeast=1000):
     """The jumping runs of at least `atLeast` cycles: cycles, simulated, jumps, CPU [s], crushes, settlement [m]
-    (the jumped cycles' included) and its extrapolated part."""
+    (the jumped cycles' included) and its extrapolated part (both as the code of today extrapolates them)."""
     runs = _runs(path)
     out = []
     for _, r in runs[runs.jump & (runs.cycles >= atLeast)].iterrows():
         s = r.run.summary
         out.append({'runId': r.runId, 'seed': r.seed, 'cycles': int(s['cycles']), 'simulated': s['cyclesSimulated'],
                     'jumps': s['jumps'], 'cpuSeconds': s['cpuSeconds'], 'crushes': int(s['nCrushed']),
-                    'settlement': _settlement(r.run), 'settlementJumped': s['settlementJumped'],
+                    'settlement': _settlement(r.run),
+                    'settlementJumped': _settlement(r.run) - float(r.run.cycles.settlement.iloc[-1]),
                     'stoppedBy': s.get('stoppedBy')})
     return pd.DataFrame(out)
 
