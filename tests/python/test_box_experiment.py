@@ -182,7 +182,9 @@ def test_a_run_in_slices_goes_on_from_a_state_and_refuses_other_physics(run, tmp
         BoxTest(results=str(tmp_path), continueFrom=end, **dict(SMALL, ft0=4e4, cycles=1)).run()
     with pytest.raises(ParamError, match='continueFrom = .* is not allowed: no such state file'):
         BoxTest(results=str(tmp_path), continueFrom=str(tmp_path / 'none.yade.gz'), **SMALL)
-    slice2 = BoxTest(results=str(tmp_path), runId='slice2', continueFrom=end, **dict(SMALL, cycles=1))
+    # a slice may store beds elsewhere (another machine's path): the saved run has its bed
+    slice2 = BoxTest(results=str(tmp_path), runId='slice2', continueFrom=end,
+                     **dict(SMALL, cycles=1, bedDir=str(tmp_path / 'other-beds')))
     s2 = slice2.run()
     cyc = pd.read_csv(os.path.join(str(tmp_path), 'slice2', 'cycles.csv'))
     assert list(cyc.cycle) == [1, 2, 3, 4] and s2['cycles'] == 4 and s2['params']['continueFrom'] == end

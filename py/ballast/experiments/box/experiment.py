@@ -132,7 +132,9 @@ class BoxTest(Experiment):
     NAME = 'box'
     Parameters = BoxParameters
     # where and how it reports, and how its cycles are simulated (cycle jumping)
-    REOPEN_PARAMS = ('results', 'runId', 'progress', 'vtk', 'cycles', 'saveEvery', 'continueFrom') + tuple(CYCLE_JUMP)
+    # bedDir: a reopened run has its bed; where beds are stored (another machine's path) changes nothing in it
+    REOPEN_PARAMS = ('results', 'runId', 'progress', 'vtk', 'cycles', 'saveEvery', 'continueFrom',
+                     'bedDir') + tuple(CYCLE_JUMP)
 
     def __init__(self, parameters=None, **params):
         self.rig = self.recorder = self.jumper = None
