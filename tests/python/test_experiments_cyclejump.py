@@ -93,7 +93,7 @@ def test_the_jumpers_state_comes_back_whole(monkeypatch):
     assert plan is not None
     back = CycleJumper.fromState(j.state())
     for k in ('window', 'steady', 'maxDamage', 'margin', 'growth', 'after', 'driftNoise', 'target', 'ids', 'direct',
-              'jumps', 'jumped', 'extrapolated', 'on'):
+              'jumps', 'jumped', 'on'):
         assert getattr(back, k) == getattr(j, k), k
     old = {k: v for k, v in j.state().items() if k != 'driftNoise'}    # saved before jumpDriftNoise existed
     assert CycleJumper.fromState(old).driftNoise == 0.0

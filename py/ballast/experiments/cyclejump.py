@@ -47,7 +47,6 @@ class CycleJumper:
                                   # in it] of every simulated cycle (no third entry in states of before it: False)
         self.jumps = []           # one dict per jump (LOG_COLUMNS)
         self.jumped = 0           # cycles not simulated [cycles]
-        self.extrapolated = 0.0   # settlement of the jumped cycles [m] as the last jump's law gave it
         self.pending = None       # the plan of the jump to make at the next step
         self.on = True            # False: the cycles are read, no jump is planned (a run reopened without jump)
 
@@ -110,7 +109,6 @@ class CycleJumper:
         law = settlementLaw([d[1] for d in self.direct], [len(d) > 2 and d[2] for d in self.direct])
         self.jumped += n
         ds = law['b'] * np.log((N0 + n) / N0) if law else 0.0   # what this jump adds to b ln(N / n)
-        self.extrapolated += float(ds)
         entry = {'jump': len(self.jumps) + 1, 'cycle': N0, 'cycles': n, 'to': N0 + n, 'limit': plan['limit'],
                  'grain': plan['grain'], 'maxRate': plan['maxRate'],
                  'maxDamage': float(np.max(engine.fatigueState(ids)[:, 0])) if ids else 0.0,
@@ -127,8 +125,7 @@ class CycleJumper:
     # ------------------------------------------------------------------ saving
     def state(self):
         s = {k: getattr(self, k) for k in ('window', 'steady', 'maxDamage', 'margin', 'growth', 'after', 'driftNoise',
-                                           'target',
-                                           'ids', 'direct', 'jumps', 'jumped', 'extrapolated', 'on')}
+                                           'target', 'ids', 'direct', 'jumps', 'jumped', 'on')}
         s['last'] = _pack(self.last)
         s['increments'] = [_pack(a) for a in self.increments]
         s['pending'] = None if self.pending is None else dict(
@@ -139,7 +136,7 @@ class CycleJumper:
     def fromState(cls, s, ref=None):
         # states saved before jumpDriftNoise existed counted the whole drift
         j = cls(s['window'], s['steady'], s['maxDamage'], s['margin'], s['growth'], s['after'], s.get('driftNoise', 0.0))
-        for k in ('target', 'ids', 'direct', 'jumps', 'jumped', 'extrapolated'):
+        for k in ('target', 'ids', 'direct', 'jumps', 'jumped'):   # states of before also hold an unused 'extrapolated'
             setattr(j, k, s[k])
         j.on = s.get('on', True)
         j.last = _unpack(s['last'])
