@@ -9,7 +9,8 @@
 namespace ballast {
 
 CycleJumpParameters CycleJumpParameters::checked(double window, double steady, double maxDamage, double margin,
-                                                 double growth, double endurance, double driftNoise)
+                                                 double growth, double endurance, double driftNoise, double exponent,
+                                                 double driftDamage)
 {
 	// braces: checked in the order written
 	return CycleJumpParameters{static_cast<long>(requireInRange(ranges::jumpWindow, "window", window)),
@@ -18,7 +19,9 @@ CycleJumpParameters CycleJumpParameters::checked(double window, double steady, d
 	                           static_cast<long>(requireInRange(ranges::jumpMargin, "margin", margin)),
 	                           requireInRange(ranges::jumpGrowth, "growth", growth),
 	                           requireInRange(ranges::fatigueEndurance, "endurance", endurance),
-	                           requireInRange(ranges::jumpDriftNoise, "driftNoise", driftNoise)};
+	                           requireInRange(ranges::jumpDriftNoise, "driftNoise", driftNoise),
+	                           requireInRange(ranges::fatigueExponent, "exponent", exponent),
+	                           requireInRange(ranges::jumpDriftDamage, "driftDamage", driftDamage)};
 }
 
 const char* jumpLimitName(JumpLimit limit)
@@ -32,6 +35,21 @@ const char* jumpLimitName(JumpLimit limit)
 		case JumpLimit::failure: return "failure";
 	}
 	return "?";
+}
+
+double driftDamageBound(const CycleJumpParameters& p, double sMax, double d, double cycles)
+{
+	const double b = p.exponent, top = b / (b + 1);
+	// an antiderivative of (1 - s) s^b, continued past its top by the top's value: the law made nondecreasing
+	auto law   = [b](double s) { return (1 - s) * std::pow(s, b); };
+	auto integ = [&](double s) {
+		const double u = std::min(s, top);
+		return std::pow(u, b + 1) / (b + 1) - std::pow(u, b + 2) / (b + 2) + (s > top ? law(top) * (s - top) : 0.0);
+	};
+	const double last = sMax + cycles * d;
+	if (last < p.endurance) return 0.0;
+	// for a nondecreasing g, g(s_k) <= (1/d) times its integral over [s_k, s_k + d]
+	return (integ(last + d) - integ(std::max(p.endurance, sMax + d))) / d;
 }
 
 JumpPlan planJump(const CycleJumpParameters& p, long n, const double* damage, const double* peaks, long cycle,
@@ -82,7 +100,19 @@ JumpPlan planJump(const CycleJumpParameters& p, long n, const double* damage, co
 		const double drift = (second - first - p.driftNoise * spread) / (0.5 * W);
 		rate[g]            = r;
 		plan.maxRate       = std::max(plan.maxRate, r);
-		if (sMax < p.endurance && drift > 0) bound(std::floor((p.endurance - sMax) / drift), JumpLimit::endurance, g);
+		if (sMax < p.endurance && drift > 0) {
+			// no damage before the peaks reach e; beyond, the largest DN whose bound is within driftDamage
+			double lo = std::floor((p.endurance - sMax) / drift), hi = best;
+			if (lo < hi && driftDamageBound(p, sMax, drift, hi) > p.driftDamage) {
+				if (driftDamageBound(p, sMax, drift, lo) > p.driftDamage) lo -= 1;  // its last peak is e exactly
+				while (hi - lo > 1) {
+					const double mid = std::floor(0.5 * (lo + hi));
+					(driftDamageBound(p, sMax, drift, mid) <= p.driftDamage ? lo : hi) = mid;
+				}
+				bound(lo, JumpLimit::endurance, g);
+			}
+			bound(std::floor((1.0 - DW - sMax) / drift) - p.margin, JumpLimit::failure, g);
+		}
 		if (r <= 0) continue;  // no damage in the window: nothing to extrapolate for this grain
 		if (sMax <= 0)
 			throw ArgumentError("peaks: grain " + std::to_string(g) + "'s damage grew in the window, but its peaks are 0");

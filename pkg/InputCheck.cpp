@@ -99,6 +99,7 @@ namespace ranges {
 	const ParameterRange jumpMargin{"jumpMargin", 0, 10000, true, true, true, false, "an integer in [0, 10000]"};
 	const ParameterRange jumpGrowth{"jumpGrowth", 0, 1000, false, true, false, false, "a number in (0, 1000]"};
 	const ParameterRange jumpDriftNoise{"jumpDriftNoise", 0, 100, true, true, false, false, "a number in [0, 100]"};
+	const ParameterRange jumpDriftDamage{"jumpDriftDamage", 0, 1, true, false, false, false, "a number in [0, 1)"};
 }  // namespace ranges
 
 const std::vector<const ParameterRange*>& parameterRanges()
@@ -106,7 +107,8 @@ const std::vector<const ParameterRange*>& parameterRanges()
 	static const std::vector<const ParameterRange*> all = {
 	        &ranges::ft0,  &ranges::m, &ranges::rMin, &ranges::seed, &ranges::weibullModulus, &ranges::fatigueExponent,
 	        &ranges::fatigueEndurance, &ranges::fatigueHysteresis, &ranges::strength, &ranges::jumpWindow, &ranges::jumpSteady,
-	        &ranges::jumpMaxDamage, &ranges::jumpMargin, &ranges::jumpGrowth, &ranges::jumpDriftNoise};
+	        &ranges::jumpMaxDamage, &ranges::jumpMargin, &ranges::jumpGrowth, &ranges::jumpDriftNoise,
+	        &ranges::jumpDriftDamage};
 	return all;
 }
 

@@ -65,6 +65,7 @@ namespace ranges {
 	extern const ParameterRange jumpMargin;         // [cycles]
 	extern const ParameterRange jumpGrowth;         // [-]
 	extern const ParameterRange jumpDriftNoise;     // [standard errors]
+	extern const ParameterRange jumpDriftDamage;    // [-]
 }  // namespace ranges
 
 // Every range above, in the order of the list.

@@ -23,12 +23,13 @@ namespace {
 	bp::tuple cycleJumpPlan(const bp::object& damage, const bp::object& peaks, const bp::object& cycle,
 	                        const bp::object& remaining, const bp::object& window, const bp::object& steady,
 	                        const bp::object& maxDamage, const bp::object& margin, const bp::object& growth,
-	                        const bp::object& endurance, const bp::object& driftNoise)
+	                        const bp::object& endurance, const bp::object& driftNoise, const bp::object& exponent,
+	                        const bp::object& driftDamage)
 	{
 		const CycleJumpParameters p = CycleJumpParameters::checked(
 		        asScalar(window, "window"), asScalar(steady, "steady"), asScalar(maxDamage, "maxDamage"),
 		        asScalar(margin, "margin"), asScalar(growth, "growth"), asScalar(endurance, "endurance"),
-		        asScalar(driftNoise, "driftNoise"));
+		        asScalar(driftNoise, "driftNoise"), asScalar(exponent, "exponent"), asScalar(driftDamage, "driftDamage"));
 		const long  N = asCycles(cycle, "cycle", 1), left = asCycles(remaining, "remaining", 0);
 		np::ndarray D = asDoubles(damage, "damage");
 		requireShape(D, "damage", {p.window + 1, -1},
@@ -49,11 +50,12 @@ void registerCycleJump()
 {
 	bp::def("cycleJumpPlan", cycleJumpPlan,
 	        (bp::arg("damage"), "peaks", "cycle", "remaining", "window", "steady", "maxDamage", "margin", "growth",
-	         "endurance", "driftNoise"),
+	         "endurance", "driftNoise", "exponent", "driftDamage"),
 	        "Cycle jumping (docs/cycles.md): damage (window+1, N) [-], each grain's fatigue damage at the start of the last\n"
 	        "`window` simulated cycles and at the end of each; peaks (window, N) [-], each grain's largest sigma_e / f_t in\n"
-	        "each of them; cycle [cycles], the count at the window's end; remaining [cycles]; window .. endurance, driftNoise:\n"
-	        "the jump parameters (docs/cycles.md; driftNoise [standard errors]). Returns (DN [cycles], what\n"
+	        "each of them; cycle [cycles], the count at the window's end; remaining [cycles]; window .. endurance, driftNoise,\n"
+	        "exponent, driftDamage: the jump parameters (docs/cycles.md; driftNoise [standard errors]; exponent: the fatigue\n"
+	        "law's b). Returns (DN [cycles], what\n"
 	        "bounds it: 'remaining', 'growth', 'maxDamage', 'steady', 'endurance' or 'failure', the bounding grain's index\n"
 	        "(-1 for remaining and growth), the largest rate [1/cycle], the rate of each grain (N,) [1/cycle]).");
 }

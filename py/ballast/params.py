@@ -318,9 +318,12 @@ CYCLE_JUMP = {
                         'again in every stretch of log N, where the bed may change (1: at most doubling)',
                         *coreRange('jumpGrowth')),
     'jumpDriftNoise': Param(2.0, '-', 'a grain below the endurance ratio whose peaks rise between the window\'s halves '
-                            'limits a jump to the cycles it needs to reach it, the rise counted beyond this many standard '
-                            'errors of it (from the peaks\' scatter within the halves; 0: the whole rise)',
-                            *coreRange('jumpDriftNoise')),
+                            'drifts towards damage; the rise counts beyond this many standard errors of it (from the '
+                            'peaks\' scatter within the halves; 0: the whole rise)', *coreRange('jumpDriftNoise')),
+    'jumpDriftDamage': Param(1e-3, '-', 'a grain below the endurance ratio whose peaks drift up limits a jump to the '
+                             'cycles in which it would collect at most this damage unseen (a bound on the fatigue law '
+                             'summed along the drift; 0: its peaks may not reach the endurance ratio, the rule before '
+                             'this parameter)', *coreRange('jumpDriftDamage')),
     'jumpAfter': Param(0, 'cycles', 'no jump before this cycle: the cycles a bed needs to shake down, simulated',
                        intBetween(0, 10 ** 9), 'an integer in [0, 10^9]'),
 }

@@ -19,9 +19,11 @@ namespace {
 const long kFar = 1000000;  // [cycles] a count whose growth bound never binds here
 
 CycleJumpParameters params(long window = 4, double steady = 0.1, double maxDamage = 1.0 - 1e-9, long margin = 0,
-                           double growth = 1000, double endurance = 0.5, double driftNoise = 0)
+                           double growth = 1000, double endurance = 0.5, double driftNoise = 0, double exponent = 10,
+                           double driftDamage = 0)
 {
-	return CycleJumpParameters::checked(window, steady, maxDamage, margin, growth, endurance, driftNoise);
+	return CycleJumpParameters::checked(window, steady, maxDamage, margin, growth, endurance, driftNoise, exponent,
+	                                    driftDamage);
 }
 
 // One grain's damage over a window of W cycles growing by `rate` a cycle from D0.
@@ -181,6 +183,59 @@ TEST(CycleJump, PeaksThatOnlyScatterDoNotDrift)
 	          static_cast<long>(std::floor((0.5 - 0.42) / (0.02 / 1.0))));
 }
 
+// The damage a drifting grain would collect unseen, summed cycle by cycle with Fatigue.hpp's law.
+double driftedDamage(double b, double e, double sMax, double d, long cycles)
+{
+	double D = 0;
+	for (long k = 1; k <= cycles; ++k) {
+		const double s = sMax + k * d;
+		if (s >= e) D += (1 - s) * std::pow(s, b);
+	}
+	return D;
+}
+
+TEST(CycleJump, AGrainDriftingPastTheEnduranceRatioMayCollectUpToDriftDamage)
+{
+	// b = 1, e = 0.25, peaks 0.109375 | 0.125 (W = 2, binary fractions: exact): d = 1/64, s_k = 0.125 + k/64
+	// reaches e at k = 8. The bound (1/d) [s^2/2 - s^3/3] from 0.25 to s_DN + 1/64 (top of (1 - s) s at 0.5, not
+	// reached): DN = 8: 0.19132, 9: 0.38997, 10: 0.59546 (the sums 0.1875, 0.38257, 0.58472 lie below).
+	const std::vector<double> none(3, 0.0), rising{0.109375, 0.125};
+	auto                      p = [](double driftDamage, long margin = 0) {
+                return params(2, 0.1, 0.99, margin, 1000, 0.25, 0, 1, driftDamage);
+	};
+	EXPECT_NEAR(driftDamageBound(p(0.5), 0.125, 1.0 / 64, 9), 0.38997395833, 1e-10);
+	JumpPlan j = plan(p(0.5), none, rising, kFar, 100000);
+	EXPECT_EQ(j.limit, JumpLimit::endurance);
+	EXPECT_EQ(j.cycles, 9);
+	EXPECT_LE(driftedDamage(1, 0.25, 0.125, 1.0 / 64, j.cycles), 0.5);
+	// 0.1 and 0: the peak of cycle 8 is e itself and collects 0.1875: 7 cycles, all below e
+	EXPECT_EQ(plan(p(0.1), none, rising, kFar, 100000).cycles, 7);
+	EXPECT_EQ(plan(p(0.0), none, rising, kFar, 100000).cycles, 7);
+	// a grain damaged to D = 0.75 fails where its peaks reach 1 - D = 0.25: floor(0.125 / (1/64)) - margin 1 = 7
+	j = plan(p(0.5, 1), std::vector<double>(3, 0.75), rising, kFar, 100000);
+	EXPECT_EQ(j.limit, JumpLimit::failure);
+	EXPECT_EQ(j.cycles, 7);
+}
+
+TEST(CycleJump, AtALargeExponentADriftingGrainJumpsFarPastTheEnduranceRatio)
+{
+	// b = 30, e = 0.5, peaks 0.3671875 | 0.375 (W = 2): d = 1/128, e reached at k = 16. The bound of the damage
+	// collected (1/d) [s^31/31 - s^32/32] from 0.5 to s_DN + 1/128: DN = 53 (s 0.789): 8.2591e-4; 54: 1.0805e-3.
+	// driftDamage 1e-3 allows 53 cycles; 0 allows 15 (the 16th peak is e itself and collects 4.66e-10). The sum of the
+	// law over the 53 is 7.1887e-4.
+	const CycleJumpParameters p = params(2, 0.1, 0.99, 0, 1000, 0.5, 0, 30, 1e-3);
+	EXPECT_NEAR(driftDamageBound(p, 0.375, 1.0 / 128, 53), 8.259066221e-4, 1e-12);
+	EXPECT_NEAR(driftDamageBound(p, 0.375, 1.0 / 128, 54), 1.080489589e-3, 1e-12);
+	const JumpPlan j = plan(p, std::vector<double>(3, 0.0), {0.3671875, 0.375}, kFar, 100000);
+	EXPECT_EQ(j.limit, JumpLimit::endurance);
+	EXPECT_EQ(j.cycles, 53);
+	EXPECT_NEAR(driftedDamage(30, 0.5, 0.375, 1.0 / 128, 53), 7.188670144e-4, 1e-12);
+	EXPECT_EQ(plan(params(2, 0.1, 0.99, 0, 1000, 0.5, 0, 30, 0), std::vector<double>(3, 0.0), {0.3671875, 0.375}, kFar,
+	               100000)
+	                  .cycles,
+	          15);
+}
+
 TEST(CycleJump, TheCountGrowsByAtMostTheGrowthFactor)
 {
 	// no damage, cycle 30, growth 1: at most 30 more (the count at most doubles); growth 0.5: 15
@@ -212,21 +267,25 @@ TEST(CycleJump, AGrainAlreadyPastItsFailureAllowsNoJump)
 
 TEST(CycleJump, BadInputIsRefusedNamingIt)
 {
-	EXPECT_EQ(messageOf([] { CycleJumpParameters::checked(1, 0.1, 0.05, 0, 1, 0.5, 2); }),
+	EXPECT_EQ(messageOf([] { CycleJumpParameters::checked(1, 0.1, 0.05, 0, 1, 0.5, 2, 10, 0.001); }),
 	          "window: expected an integer in [2, 10000], got 1");
-	EXPECT_EQ(messageOf([] { CycleJumpParameters::checked(4.5, 0.1, 0.05, 0, 1, 0.5, 2); }),
+	EXPECT_EQ(messageOf([] { CycleJumpParameters::checked(4.5, 0.1, 0.05, 0, 1, 0.5, 2, 10, 0.001); }),
 	          "window: expected an integer in [2, 10000], got 4.5");
-	EXPECT_EQ(messageOf([] { CycleJumpParameters::checked(4, 0, 0.05, 0, 1, 0.5, 2); }), "steady: expected a number in (0, 1], got 0");
-	EXPECT_EQ(messageOf([] { CycleJumpParameters::checked(4, 0.1, 1, 0, 1, 0.5, 2); }),
+	EXPECT_EQ(messageOf([] { CycleJumpParameters::checked(4, 0, 0.05, 0, 1, 0.5, 2, 10, 0.001); }), "steady: expected a number in (0, 1], got 0");
+	EXPECT_EQ(messageOf([] { CycleJumpParameters::checked(4, 0.1, 1, 0, 1, 0.5, 2, 10, 0.001); }),
 	          "maxDamage: expected a number in (0, 1), got 1");
-	EXPECT_EQ(messageOf([] { CycleJumpParameters::checked(4, 0.1, 0.05, -1, 1, 0.5, 2); }),
+	EXPECT_EQ(messageOf([] { CycleJumpParameters::checked(4, 0.1, 0.05, -1, 1, 0.5, 2, 10, 0.001); }),
 	          "margin: expected an integer in [0, 10000], got -1");
-	EXPECT_EQ(messageOf([] { CycleJumpParameters::checked(4, 0.1, 0.05, 0, 0, 0.5, 2); }),
+	EXPECT_EQ(messageOf([] { CycleJumpParameters::checked(4, 0.1, 0.05, 0, 0, 0.5, 2, 10, 0.001); }),
 	          "growth: expected a number in (0, 1000], got 0");
-	EXPECT_EQ(messageOf([] { CycleJumpParameters::checked(4, 0.1, 0.05, 0, 1, 1, 2); }),
+	EXPECT_EQ(messageOf([] { CycleJumpParameters::checked(4, 0.1, 0.05, 0, 1, 1, 2, 10, 0.001); }),
 	          "endurance: expected a number in [0, 1), got 1");
-	EXPECT_EQ(messageOf([] { CycleJumpParameters::checked(4, 0.1, 0.05, 0, 1, 0.5, -1); }),
+	EXPECT_EQ(messageOf([] { CycleJumpParameters::checked(4, 0.1, 0.05, 0, 1, 0.5, -1, 10, 0.001); }),
 	          "driftNoise: expected a number in [0, 100], got -1");
+	EXPECT_EQ(messageOf([] { CycleJumpParameters::checked(4, 0.1, 0.05, 0, 1, 0.5, 2, 0.5, 0.001); }),
+	          "exponent: expected a number in [1, 100], got 0.5");
+	EXPECT_EQ(messageOf([] { CycleJumpParameters::checked(4, 0.1, 0.05, 0, 1, 0.5, 2, 10, 1); }),
+	          "driftDamage: expected a number in [0, 1), got 1");
 	const std::vector<double> falling{0, 0.01, 0.02, 0.005, 0.03};
 	EXPECT_EQ(messageOf([&] { plan(params(), falling, steadyPeaks(4, {0.6}), kFar, 10); })
 	                  .rfind("damage: grain 0's damage falls from 0.02 to 0.005", 0),

@@ -6,7 +6,8 @@ import pytest
 
 from ballast import _ballast as B
 
-LAW = dict(window=4, steady=0.2, maxDamage=0.99, margin=1, growth=1000.0, endurance=0.5, driftNoise=2.0)
+LAW = dict(window=4, steady=0.2, maxDamage=0.99, margin=1, growth=1000.0, endurance=0.5, driftNoise=2.0, exponent=10.0,
+           driftDamage=0.0)
 
 
 def test_a_steady_grain_jumps_to_the_last_cycle_it_survives():
@@ -35,6 +36,17 @@ def test_peaks_that_only_scatter_do_not_bound_the_jump():
     assert B.cycleJumpPlan(np.zeros((5, 1)), peaks, 10 ** 6, 1000, **dict(LAW, driftNoise=0.5))[:3] == (
         20, 'endurance', 0)
     assert B.cycleJumpPlan(np.zeros((5, 1)), peaks, 10 ** 6, 1000, **LAW)[:3] == (1000, 'remaining', -1)
+
+
+def test_a_grain_drifting_past_the_endurance_ratio_collects_at_most_driftDamage():
+    """b = 1, e = 0.25, peaks 0.109375 | 0.125 (window 2): d = 1/64 a cycle from 0.125. The bound on the damage
+    collected, (1/d) [s^2/2 - s^3/3] from 0.25 to 0.125 + (DN + 1)/64, is 0.38997 at DN = 9 and 0.59546 at 10:
+    driftDamage 0.5 allows 9 cycles; 0 allows 7 (the 8th peak is 0.25 itself and would collect (1 - 0.25) 0.25)."""
+    law = dict(LAW, window=2, endurance=0.25, driftNoise=0.0, exponent=1.0, margin=0)
+    peaks = np.array([[0.109375], [0.125]])
+    assert B.cycleJumpPlan(np.zeros((3, 1)), peaks, 10 ** 6, 1000, **dict(law, driftDamage=0.5))[:3] == (
+        9, 'endurance', 0)
+    assert B.cycleJumpPlan(np.zeros((3, 1)), peaks, 10 ** 6, 1000, **law)[:3] == (7, 'endurance', 0)
 
 
 @pytest.mark.parametrize('damage,peaks,error,match', [

@@ -28,6 +28,7 @@ EXPECTED = {
     'jumpMargin': (0.0, 10000.0, True, True, True, False, 'an integer in [0, 10000]'),
     'jumpGrowth': (0.0, 1000.0, False, True, False, False, 'a number in (0, 1000]'),
     'jumpDriftNoise': (0.0, 100.0, True, True, False, False, 'a number in [0, 100]'),
+    'jumpDriftDamage': (0.0, 1.0, True, False, False, False, 'a number in [0, 1)'),
 }
 TABLE = dict(CRUSH, **ABRASION, **CYCLE_JUMP)
 
@@ -52,19 +53,24 @@ ENTRIES = {
     'seed': [lambda v: B.weibullFactors(v, KEYS, 3.0), lambda v: B.randomRotation(v, 0),
              lambda v: B.placeFragments(6, [0, 0, 0], 0.02, v, 0)],
     'weibullModulus': [lambda v: B.weibullFactors(1, KEYS, v)],
-    'fatigueExponent': [lambda v: B.fatigueCheck([0.5], [0.02], FRESH, v, 0.5, 0.1, 0.0)],
+    'fatigueExponent': [lambda v: B.fatigueCheck([0.5], [0.02], FRESH, v, 0.5, 0.1, 0.0),
+                        lambda v: B.cycleJumpPlan(np.zeros((3, 1)), np.zeros((2, 1)), 7, 5, 2, 0.2, 0.05, 1, 1.0, 0.5, 2.0,
+                                                  v, 1e-3)],
     'fatigueEndurance': [lambda v: B.fatigueCheck([0.5], [0.02], FRESH, 2.0, v, 0.1, 0.0),
-                         lambda v: B.cycleJumpPlan(np.zeros((3, 1)), np.zeros((2, 1)), 7, 5, 2, 0.2, 0.05, 1, 1.0, v, 2.0)],
+                         lambda v: B.cycleJumpPlan(np.zeros((3, 1)), np.zeros((2, 1)), 7, 5, 2, 0.2, 0.05, 1, 1.0, v, 2.0, 10.0, 1e-3)],
     'fatigueHysteresis': [lambda v: B.fatigueCheck([0.5], [0.02], FRESH, 2.0, 0.5, v, 0.0)],
     'strength': [lambda v: B.abrasionCheck([0.02], [0], [-1], [1.0], [0.02], [0.0], [1e-6], v, 0.0)],
     # a window of v cycles needs v + 1 rows of damage and v of peaks (3 and 2 where v is refused anyway)
     'jumpWindow': [lambda v: B.cycleJumpPlan(np.zeros((v + 1 if 2 <= v <= 10000 else 3, 1)),
-                                             np.zeros((v if 2 <= v <= 10000 else 2, 1)), 7, 5, v, 0.2, 0.05, 1, 1.0, 0.5, 2.0)],
-    'jumpSteady': [lambda v: B.cycleJumpPlan(np.zeros((3, 1)), np.zeros((2, 1)), 7, 5, 2, v, 0.05, 1, 1.0, 0.5, 2.0)],
-    'jumpMaxDamage': [lambda v: B.cycleJumpPlan(np.zeros((3, 1)), np.zeros((2, 1)), 7, 5, 2, 0.2, v, 1, 1.0, 0.5, 2.0)],
-    'jumpMargin': [lambda v: B.cycleJumpPlan(np.zeros((3, 1)), np.zeros((2, 1)), 7, 5, 2, 0.2, 0.05, v, 1.0, 0.5, 2.0)],
-    'jumpGrowth': [lambda v: B.cycleJumpPlan(np.zeros((3, 1)), np.zeros((2, 1)), 7, 5, 2, 0.2, 0.05, 1, v, 0.5, 2.0)],
-    'jumpDriftNoise': [lambda v: B.cycleJumpPlan(np.zeros((3, 1)), np.zeros((2, 1)), 7, 5, 2, 0.2, 0.05, 1, 1.0, 0.5, v)],
+                                             np.zeros((v if 2 <= v <= 10000 else 2, 1)), 7, 5, v, 0.2, 0.05, 1, 1.0, 0.5, 2.0,
+                                             10.0, 1e-3)],
+    'jumpSteady': [lambda v: B.cycleJumpPlan(np.zeros((3, 1)), np.zeros((2, 1)), 7, 5, 2, v, 0.05, 1, 1.0, 0.5, 2.0, 10.0, 1e-3)],
+    'jumpMaxDamage': [lambda v: B.cycleJumpPlan(np.zeros((3, 1)), np.zeros((2, 1)), 7, 5, 2, 0.2, v, 1, 1.0, 0.5, 2.0, 10.0, 1e-3)],
+    'jumpMargin': [lambda v: B.cycleJumpPlan(np.zeros((3, 1)), np.zeros((2, 1)), 7, 5, 2, 0.2, 0.05, v, 1.0, 0.5, 2.0, 10.0, 1e-3)],
+    'jumpGrowth': [lambda v: B.cycleJumpPlan(np.zeros((3, 1)), np.zeros((2, 1)), 7, 5, 2, 0.2, 0.05, 1, v, 0.5, 2.0, 10.0, 1e-3)],
+    'jumpDriftNoise': [lambda v: B.cycleJumpPlan(np.zeros((3, 1)), np.zeros((2, 1)), 7, 5, 2, 0.2, 0.05, 1, 1.0, 0.5, v, 10.0, 1e-3)],
+    'jumpDriftDamage': [lambda v: B.cycleJumpPlan(np.zeros((3, 1)), np.zeros((2, 1)), 7, 5, 2, 0.2, 0.05, 1, 1.0, 0.5, 2.0, 10.0,
+                                                  v)],
 }
 
 
@@ -103,7 +109,7 @@ def test_python_and_the_binding_refuse_the_same_values(name):
     ('weibullModulus', 'modulus', 0.5), ('fatigueExponent', 'exponent', 0.5), ('fatigueEndurance', 'endurance', 1.0),
     ('fatigueHysteresis', 'hysteresis', 0.7), ('strength', 'strength', -1.0), ('jumpWindow', 'window', 1),
     ('jumpSteady', 'steady', 0.0), ('jumpMaxDamage', 'maxDamage', 1.0), ('jumpMargin', 'margin', -1),
-    ('jumpGrowth', 'growth', 0.0), ('jumpDriftNoise', 'driftNoise', -1.0)])
+    ('jumpGrowth', 'growth', 0.0), ('jumpDriftNoise', 'driftNoise', -1.0), ('jumpDriftDamage', 'driftDamage', 1.0)])
 def test_both_say_the_same_words(name, argument, value):
     words = EXPECTED[name][-1]
     with pytest.raises(ParamError) as e:

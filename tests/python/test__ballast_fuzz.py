@@ -553,7 +553,22 @@ def matricesToArray(g):
     return kw, check
 
 
-def cycleJumpRef(D, S, cycle, remaining, W, steady, maxDamage, margin, growth, endurance, driftNoise):
+def driftDamageRef(b, e, s0, d, N):
+    """The bound on sum (1 - s) s^b over the drifting peaks s0 + k d >= e, k <= N: the integral of the law, held at
+    its top b / (b + 1) beyond it, from max(e, s0 + d) to s0 + (N + 1) d, over d."""
+    if s0 + N * d < e:
+        return 0.0
+    top = b / (b + 1)
+
+    def primitive(s):
+        u = min(s, top)
+        extra = (1 - top) * top ** b * (s - top) if s > top else 0.0
+        return u ** (b + 1) / (b + 1) - u ** (b + 2) / (b + 2) + extra
+    return (primitive(s0 + (N + 1) * d) - primitive(max(e, s0 + d))) / d
+
+
+def cycleJumpRef(D, S, cycle, remaining, W, steady, maxDamage, margin, growth, endurance, driftNoise, exponent,
+                 driftDamage):
     """CycleJump.hpp's bounds, written again: (cycles, limit, grain, maxRate, rate)."""
     h, best, limit, grain = W // 2, float(remaining), 'remaining', -1
     if math.floor(growth * cycle) < best:
@@ -575,7 +590,18 @@ def cycleJumpRef(D, S, cycle, remaining, W, steady, maxDamage, margin, growth, e
         drift = (second - first - driftNoise * spread) / (0.5 * W)
         bounds = []
         if sMax < endurance and drift > 0:
-            bounds.append((math.floor((endurance - sMax) / drift), 'endurance'))
+            lo, hi = math.floor((endurance - sMax) / drift), best
+            if lo < hi and driftDamageRef(exponent, endurance, sMax, drift, hi) > driftDamage:
+                if driftDamageRef(exponent, endurance, sMax, drift, lo) > driftDamage:
+                    lo -= 1
+                while hi - lo > 1:   # the largest count whose bound is within driftDamage
+                    mid = math.floor((lo + hi) / 2)
+                    if driftDamageRef(exponent, endurance, sMax, drift, mid) <= driftDamage:
+                        lo = mid
+                    else:
+                        hi = mid
+                bounds.append((lo, 'endurance'))
+            bounds.append((math.floor((1.0 - D[W, k] - sMax) / drift) - margin, 'failure'))
         if r > 0:
             a, b = (D[h, k] - D[0, k]) / h, (D[W, k] - D[h, k]) / (W - h)
             bounds.append((math.floor(maxDamage / r), 'maxDamage'))
@@ -598,7 +624,8 @@ def cycleJumpPlan(g):
               remaining=g.number(float(g.rng.integers(0, 10 ** 6))), window=g.number(float(W)),
               steady=g.number(g.rng.uniform(0.01, 1)), maxDamage=g.number(g.rng.uniform(0.001, 0.99)),
               margin=g.number(float(g.rng.integers(0, 4))), growth=g.number(g.pick([0.5, 1.0, 10.0, 1000.0])),
-              endurance=g.number(g.rng.uniform(0, 0.9)), driftNoise=g.number(g.pick([0.0, 0.5, 2.0, 100.0])))
+              endurance=g.number(g.rng.uniform(0, 0.9)), driftNoise=g.number(g.pick([0.0, 0.5, 2.0, 100.0])),
+              exponent=g.number(g.pick([1.0, 3.0, 30.0])), driftDamage=g.number(g.pick([0.0, 1e-6, 1e-3, 0.5])))
 
     def check(out):
         cycles, limit, grain, maxRate, rate = out
@@ -607,7 +634,7 @@ def cycleJumpPlan(g):
             return False
         want = cycleJumpRef(x['damage'], x['peaks'], float(x['cycle']), float(x['remaining']), W, float(x['steady']),
                             float(x['maxDamage']), float(x['margin']), float(x['growth']), float(x['endurance']),
-                            float(x['driftNoise']))
+                            float(x['driftNoise']), float(x['exponent']), float(x['driftDamage']))
         assert (cycles, limit, grain) == want[:3] and rate.shape == (n,)
         close(rate, want[4], atol=1e-300)
         assert maxRate == pytest.approx(want[3], rel=1e-12, abs=1e-300)

@@ -86,17 +86,17 @@ def jumperOnGrain(monkeypatch, **kw):
 
 
 def test_the_jumpers_state_comes_back_whole(monkeypatch):
-    g, crush, j = jumperOnGrain(monkeypatch, window=3, margin=1, after=2, driftNoise=1.5)
+    g, crush, j = jumperOnGrain(monkeypatch, window=3, margin=1, after=2, driftNoise=1.5, driftDamage=2e-3)
     for cycle in range(1, 5):
         O.run(PER_CYCLE, True)
         plan = j.cycleEnded(crush, [g], cycle, 1e-4 * cycle, False)
     assert plan is not None
     back = CycleJumper.fromState(j.state())
-    for k in ('window', 'steady', 'maxDamage', 'margin', 'growth', 'after', 'driftNoise', 'target', 'ids', 'direct',
-              'jumps', 'jumped', 'on'):
+    for k in ('window', 'steady', 'maxDamage', 'margin', 'growth', 'after', 'driftNoise', 'driftDamage', 'target', 'ids',
+              'direct', 'jumps', 'jumped', 'on'):
         assert getattr(back, k) == getattr(j, k), k
-    old = {k: v for k, v in j.state().items() if k != 'driftNoise'}    # saved before jumpDriftNoise existed
-    assert CycleJumper.fromState(old).driftNoise == 0.0
+    old = {k: v for k, v in j.state().items() if k not in ('driftNoise', 'driftDamage')}   # saved before they existed
+    assert (CycleJumper.fromState(old).driftNoise, CycleJumper.fromState(old).driftDamage) == (0.0, 0.0)
     np.testing.assert_array_equal(back.last, j.last)
     assert all(np.array_equal(a, b) for a, b in zip(back.increments, j.increments))
     assert back.pending['cycles'] == plan['cycles'] and np.array_equal(back.pending['rate'], plan['rate'])

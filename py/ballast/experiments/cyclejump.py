@@ -32,13 +32,15 @@ def _unpack(s):
 @runtime.persistent('CycleJumper')
 class CycleJumper:
     """The damage rates of the last simulated cycles, the jumps made and the settlement they extrapolated.
-    window [cycles], steady [-], maxDamage [-], margin [cycles], growth [-], after [cycles], driftNoise [-]: the
-    parameters jumpWindow, jumpSteady, jumpMaxDamage, jumpMargin, jumpGrowth, jumpAfter, jumpDriftNoise
+    window [cycles], steady [-], maxDamage [-], margin [cycles], growth [-], after [cycles], driftNoise [-],
+    driftDamage [-]: the parameters jumpWindow, jumpSteady, jumpMaxDamage, jumpMargin, jumpGrowth, jumpAfter,
+    jumpDriftNoise, jumpDriftDamage
     (ballast.params.CYCLE_JUMP, checked by the experiment)."""
 
-    def __init__(self, window=10, steady=0.2, maxDamage=0.05, margin=1, growth=1.0, after=0, driftNoise=2.0):
+    def __init__(self, window=10, steady=0.2, maxDamage=0.05, margin=1, growth=1.0, after=0, driftNoise=2.0,
+                 driftDamage=1e-3):
         self.window, self.steady, self.maxDamage, self.margin = int(window), steady, maxDamage, int(margin)
-        self.growth, self.after, self.driftNoise = growth, int(after), driftNoise
+        self.growth, self.after, self.driftNoise, self.driftDamage = growth, int(after), driftNoise, driftDamage
         self.target = None        # the cycle the run ends at (no jump goes past it)
         self.ids = []             # the grains of the window (body ids)
         self.last = None          # (2, n): their damage D and damaging peaks at the last cycle's end (after a jump)
@@ -54,7 +56,7 @@ class CycleJumper:
     def of(cls, p):
         """The jumper of the parameters p, None without jump."""
         return cls(*(p[k] for k in ('jumpWindow', 'jumpSteady', 'jumpMaxDamage', 'jumpMargin', 'jumpGrowth',
-                                    'jumpAfter', 'jumpDriftNoise'))) if p['jump'] else None
+                                    'jumpAfter', 'jumpDriftNoise', 'jumpDriftDamage'))) if p['jump'] else None
 
     def tune(self, p):
         """The parameters p (checked) of a run reopened with other jump settings; jump off: no more jumps, the
@@ -62,6 +64,7 @@ class CycleJumper:
         self.window, self.steady, self.maxDamage, self.margin = (int(p['jumpWindow']), p['jumpSteady'],
                                                                  p['jumpMaxDamage'], int(p['jumpMargin']))
         self.growth, self.after, self.driftNoise = p['jumpGrowth'], int(p['jumpAfter']), p['jumpDriftNoise']
+        self.driftDamage = p['jumpDriftDamage']
         self.on = bool(p['jump'])
         self.increments = self.increments[-self.window:]
 
@@ -88,7 +91,7 @@ class CycleJumper:
         damage = np.maximum.accumulate(np.maximum(damage, 0.0), axis=0)   # rounding of the sums: never falling
         cycles, limit, grain, maxRate, rate = _ballast.cycleJumpPlan(
             damage, inc[:, 2], cycle, remaining, self.window, self.steady, self.maxDamage, self.margin, self.growth,
-            engine.fatigueEndurance, self.driftNoise)
+            engine.fatigueEndurance, self.driftNoise, engine.fatigueExponent, self.driftDamage)
         if cycles < 1:
             return None
         self.pending = {'cycle': int(cycle), 'cycles': int(cycles), 'limit': limit,
@@ -125,7 +128,7 @@ class CycleJumper:
     # ------------------------------------------------------------------ saving
     def state(self):
         s = {k: getattr(self, k) for k in ('window', 'steady', 'maxDamage', 'margin', 'growth', 'after', 'driftNoise',
-                                           'target', 'ids', 'direct', 'jumps', 'jumped', 'on')}
+                                           'driftDamage', 'target', 'ids', 'direct', 'jumps', 'jumped', 'on')}
         s['last'] = _pack(self.last)
         s['increments'] = [_pack(a) for a in self.increments]
         s['pending'] = None if self.pending is None else dict(
@@ -134,8 +137,9 @@ class CycleJumper:
 
     @classmethod
     def fromState(cls, s, ref=None):
-        # states saved before jumpDriftNoise existed counted the whole drift
-        j = cls(s['window'], s['steady'], s['maxDamage'], s['margin'], s['growth'], s['after'], s.get('driftNoise', 0.0))
+        # states saved before jumpDriftNoise or jumpDriftDamage existed: the rules of then (0)
+        j = cls(s['window'], s['steady'], s['maxDamage'], s['margin'], s['growth'], s['after'], s.get('driftNoise', 0.0),
+                s.get('driftDamage', 0.0))
         for k in ('target', 'ids', 'direct', 'jumps', 'jumped'):   # states of before also hold an unused 'extrapolated'
             setattr(j, k, s[k])
         j.on = s.get('on', True)
