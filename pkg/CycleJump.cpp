@@ -71,18 +71,22 @@ JumpPlan planJump(const CycleJumpParameters& p, long n, const double* damage, co
 	}
 	JumpPlan plan;
 	double   best = static_cast<double>(remaining);  // bounds compared as doubles: a tiny rate gives a huge bound
+	double   sMax = 0, drift = 0;                    // of the grain being bounded
 	auto     bound = [&](double cycles, JumpLimit limit, long g) {
                 if (cycles < best) {
                         best       = std::max(cycles, 0.0);
                         plan.limit = limit;
                         plan.grain = g;
+                        plan.peak  = g < 0 ? 0.0 : sMax;
+                        plan.drift = g < 0 ? 0.0 : drift;
                 }
 	};
 	bound(std::floor(p.growth * static_cast<double>(cycle)), JumpLimit::growth, -1);
 	for (long g = 0; g < n; ++g) {
 		const double D0 = damage[g], Dh = damage[h * n + g], DW = damage[W * n + g];
 		const double r = (DW - D0) / W, a = (Dh - D0) / h, b = (DW - Dh) / (W - h);
-		double       sMax = 0, first = 0, second = 0;
+		double       first = 0, second = 0;
+		sMax = 0;
 		for (long k = 0; k < W; ++k) {
 			sMax = std::max(sMax, peaks[k * n + g]);
 			(k < h ? first : second) += peaks[k * n + g];
@@ -97,7 +101,7 @@ JumpPlan planJump(const CycleJumpParameters& p, long n, const double* damage, co
 		}
 		const double spread = W > 2 ? std::sqrt(squares / (W - 2) * (1.0 / h + 1.0 / (W - h))) : 0.0;
 		// the halves' centres lie W / 2 cycles apart
-		const double drift = (second - first - p.driftNoise * spread) / (0.5 * W);
+		drift              = (second - first - p.driftNoise * spread) / (0.5 * W);
 		rate[g]            = r;
 		plan.maxRate       = std::max(plan.maxRate, r);
 		if (sMax < p.endurance && drift > 0) {

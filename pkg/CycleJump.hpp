@@ -62,6 +62,8 @@ struct JumpPlan {
 	JumpLimit limit   = JumpLimit::remaining;
 	long      grain   = -1;  // the grain that bounds it (-1 for remaining)
 	double    maxRate = 0;   // the largest damage rate r [1/cycle]
+	double    peak    = 0;   // the bounding grain's largest ratio s_p in the window [-] (0 for remaining, growth)
+	double    drift   = 0;   // and the drift d of its peaks [1/cycle] (<= 0: none counted)
 };
 
 // n grains; damage: (window + 1) x n, row-major, row k the damage of every grain at the end of the k-th of

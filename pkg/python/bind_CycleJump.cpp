@@ -42,7 +42,8 @@ namespace {
 		             "ratio in each of the window's cycles");
 		np::ndarray    rate = emptyDoubles({n});
 		const JumpPlan plan = planJump(p, n, dptr(D), dptr(s), N, left, wptr(rate));
-		return bp::make_tuple(plan.cycles, jumpLimitName(plan.limit), plan.grain, plan.maxRate, rate);
+		return bp::make_tuple(plan.cycles, jumpLimitName(plan.limit), plan.grain, plan.maxRate, rate, plan.peak,
+		                      plan.drift);
 	}
 }  // namespace
 
@@ -57,7 +58,8 @@ void registerCycleJump()
 	        "exponent, driftDamage: the jump parameters (docs/cycles.md; driftNoise [standard errors]; exponent: the fatigue\n"
 	        "law's b). Returns (DN [cycles], what\n"
 	        "bounds it: 'remaining', 'growth', 'maxDamage', 'steady', 'endurance' or 'failure', the bounding grain's index\n"
-	        "(-1 for remaining and growth), the largest rate [1/cycle], the rate of each grain (N,) [1/cycle]).");
+	        "(-1 for remaining and growth), the largest rate [1/cycle], the rate of each grain (N,) [1/cycle], the bounding\n"
+	        "grain's largest ratio in the window [-] and the drift of its peaks [1/cycle] (0, 0 for remaining and growth)).");
 }
 
 }  // namespace binding

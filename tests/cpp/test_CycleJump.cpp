@@ -207,6 +207,8 @@ TEST(CycleJump, AGrainDriftingPastTheEnduranceRatioMayCollectUpToDriftDamage)
 	JumpPlan j = plan(p(0.5), none, rising, kFar, 100000);
 	EXPECT_EQ(j.limit, JumpLimit::endurance);
 	EXPECT_EQ(j.cycles, 9);
+	EXPECT_EQ(j.peak, 0.125);  // the bounding grain's, as the log reports them
+	EXPECT_EQ(j.drift, 1.0 / 64);
 	EXPECT_LE(driftedDamage(1, 0.25, 0.125, 1.0 / 64, j.cycles), 0.5);
 	// 0.1 and 0: the peak of cycle 8 is e itself and collects 0.1875: 7 cycles, all below e
 	EXPECT_EQ(plan(p(0.1), none, rising, kFar, 100000).cycles, 7);

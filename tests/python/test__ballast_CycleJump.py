@@ -16,8 +16,8 @@ def test_a_steady_grain_jumps_to_the_last_cycle_it_survives():
     r = 0.4 * 0.6 ** 8
     damage = np.array([[k * r, 0.0] for k in range(5)])
     peaks = np.tile([0.6, 0.3], (4, 1))
-    cycles, limit, grain, maxRate, rate = B.cycleJumpPlan(damage, peaks, 100, 1000, **LAW)
-    assert (cycles, limit, grain) == (54, 'failure', 0)
+    cycles, limit, grain, maxRate, rate, peak, drift = B.cycleJumpPlan(damage, peaks, 100, 1000, **LAW)
+    assert (cycles, limit, grain, peak, drift) == (54, 'failure', 0, 0.6, 0.0)
     assert maxRate == pytest.approx(r, rel=1e-14) and rate.shape == (2,) and rate[1] == 0.0
 
 
@@ -44,8 +44,8 @@ def test_a_grain_drifting_past_the_endurance_ratio_collects_at_most_driftDamage(
     driftDamage 0.5 allows 9 cycles; 0 allows 7 (the 8th peak is 0.25 itself and would collect (1 - 0.25) 0.25)."""
     law = dict(LAW, window=2, endurance=0.25, driftNoise=0.0, exponent=1.0, margin=0)
     peaks = np.array([[0.109375], [0.125]])
-    assert B.cycleJumpPlan(np.zeros((3, 1)), peaks, 10 ** 6, 1000, **dict(law, driftDamage=0.5))[:3] == (
-        9, 'endurance', 0)
+    plan = B.cycleJumpPlan(np.zeros((3, 1)), peaks, 10 ** 6, 1000, **dict(law, driftDamage=0.5))
+    assert plan[:3] == (9, 'endurance', 0) and plan[5:] == (0.125, 1 / 64)
     assert B.cycleJumpPlan(np.zeros((3, 1)), peaks, 10 ** 6, 1000, **law)[:3] == (7, 'endurance', 0)
 
 

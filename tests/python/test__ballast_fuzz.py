@@ -569,8 +569,9 @@ def driftDamageRef(b, e, s0, d, N):
 
 def cycleJumpRef(D, S, cycle, remaining, W, steady, maxDamage, margin, growth, endurance, driftNoise, exponent,
                  driftDamage):
-    """CycleJump.hpp's bounds, written again: (cycles, limit, grain, maxRate, rate)."""
-    h, best, limit, grain = W // 2, float(remaining), 'remaining', -1
+    """CycleJump.hpp's bounds, written again: (cycles, limit, grain, maxRate, rate, the bounding grain's largest
+    peak and drift)."""
+    h, best, limit, grain, which = W // 2, float(remaining), 'remaining', -1, (0.0, 0.0)
     if math.floor(growth * cycle) < best:
         best, limit = max(math.floor(growth * cycle), 0.0), 'growth'
     rate = (D[W] - D[0]) / W
@@ -610,8 +611,8 @@ def cycleJumpRef(D, S, cycle, remaining, W, steady, maxDamage, margin, growth, e
             bounds.append((math.floor((1.0 - sMax - D[W, k]) / r) - margin, 'failure'))
         for c, name in bounds:   # in the order the C++ tests them: endurance, maxDamage, steady, failure
             if c < best:
-                best, limit, grain = max(c, 0.0), name, k
-    return int(best), limit, grain, max([0.0] + list(rate)), rate
+                best, limit, grain, which = max(c, 0.0), name, k, (sMax, drift)
+    return (int(best), limit, grain, max([0.0] + list(rate)), rate) + which
 
 
 def cycleJumpPlan(g):
@@ -628,7 +629,7 @@ def cycleJumpPlan(g):
               exponent=g.number(g.pick([1.0, 3.0, 30.0])), driftDamage=g.number(g.pick([0.0, 1e-6, 1e-3, 0.5])))
 
     def check(out):
-        cycles, limit, grain, maxRate, rate = out
+        cycles, limit, grain, maxRate, rate, peak, drift = out
         x = {k: asFloat(v) for k, v in kw.items()}
         if x['damage'].shape != (W + 1, n) or not moderate(x['damage'], x['peaks']):
             return False
@@ -638,6 +639,7 @@ def cycleJumpPlan(g):
         assert (cycles, limit, grain) == want[:3] and rate.shape == (n,)
         close(rate, want[4], atol=1e-300)
         assert maxRate == pytest.approx(want[3], rel=1e-12, abs=1e-300)
+        assert (peak, drift) == pytest.approx(want[5:], rel=1e-12, abs=1e-300)
         return True
     return kw, check
 

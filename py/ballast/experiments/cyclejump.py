@@ -18,7 +18,8 @@ from ..settlementlaws import settlementLaw
 from ..study.files import writeAtomic
 
 LOG_COLUMNS = ('jump', 'cycle', 'cycles', 'to', 'limit', 'grain', 'maxRate', 'maxDamage', 'settlementLawA',
-               'settlementLawB', 'settlementLawR2', 'settlementJumped', 'stateBefore', 'stateAfter')
+               'settlementLawB', 'settlementLawR2', 'settlementJumped', 'stateBefore', 'stateAfter', 'grainPeak',
+               'grainDrift')
 
 
 def _pack(a):
@@ -89,14 +90,15 @@ class CycleJumper:
         inc = np.array(self.increments)                       # (window, 3, n)
         damage = now[0] - np.concatenate([np.cumsum(inc[::-1, 0], axis=0)[::-1], np.zeros((1, len(ids)))])
         damage = np.maximum.accumulate(np.maximum(damage, 0.0), axis=0)   # rounding of the sums: never falling
-        cycles, limit, grain, maxRate, rate = _ballast.cycleJumpPlan(
+        cycles, limit, grain, maxRate, rate, peak, drift = _ballast.cycleJumpPlan(
             damage, inc[:, 2], cycle, remaining, self.window, self.steady, self.maxDamage, self.margin, self.growth,
             engine.fatigueEndurance, self.driftNoise, engine.fatigueExponent, self.driftDamage)
         if cycles < 1:
             return None
         self.pending = {'cycle': int(cycle), 'cycles': int(cycles), 'limit': limit,
                         'grain': int(ids[grain]) if grain >= 0 else -1, 'maxRate': float(maxRate),
-                        'rate': rate, 'peakRate': np.mean(inc[:, 1], axis=0)}
+                        'rate': rate, 'peakRate': np.mean(inc[:, 1], axis=0), 'grainPeak': float(peak),
+                        'grainDrift': float(drift)}
         return self.pending
 
     def apply(self, engine, before='', after=''):
@@ -117,7 +119,8 @@ class CycleJumper:
                  'maxDamage': float(np.max(engine.fatigueState(ids)[:, 0])) if ids else 0.0,
                  'settlementLawA': law['a'] if law else None, 'settlementLawB': law['b'] if law else None,
                  'settlementLawR2': law['r2'] if law else None, 'settlementJumped': float(ds),
-                 'stateBefore': before, 'stateAfter': after}
+                 'stateBefore': before, 'stateAfter': after, 'grainPeak': plan.get('grainPeak'),
+                 'grainDrift': plan.get('grainDrift')}
         self.jumps.append(entry)
         return entry
 
