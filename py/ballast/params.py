@@ -422,6 +422,7 @@ class Parameters(Mapping):
 
     OWNER = 'experiment'
     PARAMS = {}
+    STARTED_FROM = ()   # files a run started from (checked when given, not when a saved run is restored: moved since)
 
     def __init__(self, values, _checked=False):
         if not _checked:
@@ -439,6 +440,18 @@ class Parameters(Mapping):
         p.crossCheck()
         return p
 
+    @classmethod
+    def fromSaved(cls, values):
+        """The parameters of a saved run: checked as :meth:`check` does, but its STARTED_FROM files, which were
+        there when it started, are kept as they were, not looked for again (a slice's state outlives the state
+        it continued from)."""
+        return cls._checkedCarrying(values, {k: values[k] for k in cls.STARTED_FROM if k in values})
+
+    @classmethod
+    def _checkedCarrying(cls, values, carried):
+        p = cls.check(dict(values, **{k: cls.PARAMS[k].default for k in carried}))
+        return cls(dict(p._values, **carried), _checked=True) if carried else p
+
     def crossCheck(self):
         """Checks between parameters (subclasses); each error names the parameter at fault."""
 
@@ -446,8 +459,9 @@ class Parameters(Mapping):
         raise ParamError(name, '%s: %s = %r is not allowed: %s' % (self.OWNER, name, self[name], why))
 
     def replace(self, **changes):
-        """A copy with some values changed, checked again."""
-        return type(self).check(dict(self._values, **changes))
+        """A copy with some values changed, checked again (STARTED_FROM files only where changed)."""
+        return type(self)._checkedCarrying(dict(self._values, **changes),
+                                           {k: self._values[k] for k in self.STARTED_FROM if k not in changes})
 
     def __getitem__(self, name):
         return self._values[name]

@@ -4,6 +4,7 @@ end to end writes every output, its mass ledger is exact, its crushes are all ma
 gradings are where they should be; a saved state reopens and goes on; the command line."""
 import json
 import os
+import shutil
 import subprocess
 
 import numpy as np
@@ -183,11 +184,20 @@ def test_a_run_in_slices_goes_on_from_a_state_and_refuses_other_physics(run, tmp
     with pytest.raises(ParamError, match='continueFrom = .* is not allowed: no such state file'):
         BoxTest(results=str(tmp_path), continueFrom=str(tmp_path / 'none.yade.gz'), **SMALL)
     # a slice may store beds elsewhere (another machine's path): the saved run has its bed
-    slice2 = BoxTest(results=str(tmp_path), runId='slice2', continueFrom=end,
+    first = str(tmp_path / 'first.yade.gz')
+    shutil.copyfile(end, first)
+    slice2 = BoxTest(results=str(tmp_path), runId='slice2', continueFrom=first,
                      **dict(SMALL, cycles=1, bedDir=str(tmp_path / 'other-beds')))
     s2 = slice2.run()
     cyc = pd.read_csv(os.path.join(str(tmp_path), 'slice2', 'cycles.csv'))
-    assert list(cyc.cycle) == [1, 2, 3, 4] and s2['cycles'] == 4 and s2['params']['continueFrom'] == end
+    assert list(cyc.cycle) == [1, 2, 3, 4] and s2['cycles'] == 4 and s2['params']['continueFrom'] == first
+    # the state slice 2 started from is gone (another machine, a removed checkout): slice 2's own state still
+    # reopens, saying where it came from, and a third slice goes on from it
+    os.remove(first)
+    end2 = os.path.join(str(tmp_path), 'slice2', 'state-end.yade.gz')
+    assert BoxTest.reopen(end2, readOnly=True).p['continueFrom'] == first
+    s3 = BoxTest(results=str(tmp_path), runId='slice3', continueFrom=end2, **dict(SMALL, cycles=1)).run()
+    assert s3['cycles'] == 5 and s3['params']['continueFrom'] == end2
 
 
 def test_the_command_line_refuses_a_bad_value(tmp_path):

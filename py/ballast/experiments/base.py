@@ -315,7 +315,7 @@ class Experiment:
                 'phases': runtime.ref(self.phases), 'dir': runtime.ref(self.dir)}
 
     def setBaseState(self, s, ref):
-        self.p = self.Parameters.check(s['params'])
+        self.p = self.Parameters.fromSaved(s['params'])
         self.phases, self.dir = ref(s['phases']), ref(s['dir'])
         self.saved = list(s['saved'])
         self.wallBefore, self.cpuBefore = s['wallSeconds'], s['cpuSeconds']

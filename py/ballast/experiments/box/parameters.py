@@ -101,6 +101,7 @@ class BoxParameters(Parameters):
     """The box test's checked parameters (frozen) and what follows from them."""
 
     OWNER, PARAMS = OWNER, PARAMS
+    STARTED_FROM = ('continueFrom',)
 
     def history(self):
         """The load cycle (LoadHistory): the CSV of loadFile, else the sine."""
