@@ -320,10 +320,11 @@ CYCLE_JUMP = {
     'jumpDriftNoise': Param(2.0, '-', 'a grain below the endurance ratio whose peaks rise between the window\'s halves '
                             'drifts towards damage; the rise counts beyond this many standard errors of it (from the '
                             'peaks\' scatter within the halves; 0: the whole rise)', *coreRange('jumpDriftNoise')),
-    'jumpDriftDamage': Param(1e-3, '-', 'a grain below the endurance ratio whose peaks drift up limits a jump to the '
+    'jumpDriftDamage': Param(0.0, '-', 'a grain below the endurance ratio whose peaks drift up limits a jump to the '
                              'cycles in which it would collect at most this damage unseen (a bound on the fatigue law '
-                             'summed along the drift; 0: its peaks may not reach the endurance ratio, the rule before '
-                             'this parameter)', *coreRange('jumpDriftDamage')),
+                             'summed along the drift); 0: its peaks may not reach the endurance ratio, the validated '
+                             'rule (longer jumps in a bed still evolving are less conservative: docs/cycles.md)',
+                             *coreRange('jumpDriftDamage')),
     'jumpAfter': Param(0, 'cycles', 'no jump before this cycle: the cycles a bed needs to shake down, simulated',
                        intBetween(0, 10 ** 9), 'an integer in [0, 10^9]'),
 }

@@ -39,7 +39,7 @@ class CycleJumper:
     (ballast.params.CYCLE_JUMP, checked by the experiment)."""
 
     def __init__(self, window=10, steady=0.2, maxDamage=0.05, margin=1, growth=1.0, after=0, driftNoise=2.0,
-                 driftDamage=1e-3):
+                 driftDamage=0.0):
         self.window, self.steady, self.maxDamage, self.margin = int(window), steady, maxDamage, int(margin)
         self.growth, self.after, self.driftNoise, self.driftDamage = growth, int(after), driftNoise, driftDamage
         self.target = None        # the cycle the run ends at (no jump goes past it)
