@@ -125,7 +125,7 @@ TEST(InputCheck, EveryRangeIsListedOnceByItsName)
 {
 	const char* expected[] = {"ft0", "m", "rMin", "seed", "weibullModulus", "fatigueExponent", "fatigueEndurance",
 	                          "fatigueHysteresis", "strength", "jumpWindow", "jumpSteady", "jumpMaxDamage", "jumpMargin",
-	                          "jumpGrowth", "jumpDriftNoise"};
+	                          "jumpGrowth", "jumpDriftNoise", "jumpDriftDamage"};
 	ASSERT_EQ(parameterRanges().size(), sizeof expected / sizeof *expected);
 	for (size_t i = 0; i < parameterRanges().size(); ++i)
 		EXPECT_EQ(std::string(parameterRanges()[i]->name), expected[i]);
