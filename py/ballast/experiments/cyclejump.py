@@ -22,6 +22,13 @@ LOG_COLUMNS = ('jump', 'cycle', 'cycles', 'to', 'limit', 'grain', 'maxRate', 'ma
                'grainDrift')
 
 
+# attribute -> its parameter (ballast.params.CYCLE_JUMP), in the constructor's order
+SETTINGS = {'window': 'jumpWindow', 'steady': 'jumpSteady', 'maxDamage': 'jumpMaxDamage', 'margin': 'jumpMargin',
+            'growth': 'jumpGrowth', 'after': 'jumpAfter', 'driftNoise': 'jumpDriftNoise',
+            'driftDamage': 'jumpDriftDamage'}
+INTEGER = ('window', 'margin', 'after')  # counts of cycles
+
+
 def _pack(a):
     return None if a is None else {'shape': list(a.shape), 'data': runtime.packArray(a)}
 
@@ -40,8 +47,8 @@ class CycleJumper:
 
     def __init__(self, window=10, steady=0.2, maxDamage=0.05, margin=1, growth=1.0, after=0, driftNoise=2.0,
                  driftDamage=0.0):
-        self.window, self.steady, self.maxDamage, self.margin = int(window), steady, maxDamage, int(margin)
-        self.growth, self.after, self.driftNoise, self.driftDamage = growth, int(after), driftNoise, driftDamage
+        self._set(dict(zip(SETTINGS.values(), (window, steady, maxDamage, margin, growth, after, driftNoise,
+                                               driftDamage))))
         self.target = None        # the cycle the run ends at (no jump goes past it)
         self.ids = []             # the grains of the window (body ids)
         self.last = None          # (2, n): their damage D and damaging peaks at the last cycle's end (after a jump)
@@ -56,16 +63,21 @@ class CycleJumper:
     @classmethod
     def of(cls, p):
         """The jumper of the parameters p, None without jump."""
-        return cls(*(p[k] for k in ('jumpWindow', 'jumpSteady', 'jumpMaxDamage', 'jumpMargin', 'jumpGrowth',
-                                    'jumpAfter', 'jumpDriftNoise', 'jumpDriftDamage'))) if p['jump'] else None
+        if not p['jump']:
+            return None
+        j = cls()
+        j._set(p)
+        return j
+
+    def _set(self, p):
+        """The settings from the parameters p (by parameter name, SETTINGS)."""
+        for attr, name in SETTINGS.items():
+            setattr(self, attr, int(p[name]) if attr in INTEGER else p[name])
 
     def tune(self, p):
         """The parameters p (checked) of a run reopened with other jump settings; jump off: no more jumps, the
         cycles jumped stay counted."""
-        self.window, self.steady, self.maxDamage, self.margin = (int(p['jumpWindow']), p['jumpSteady'],
-                                                                 p['jumpMaxDamage'], int(p['jumpMargin']))
-        self.growth, self.after, self.driftNoise = p['jumpGrowth'], int(p['jumpAfter']), p['jumpDriftNoise']
-        self.driftDamage = p['jumpDriftDamage']
+        self._set(p)
         self.on = bool(p['jump'])
         self.increments = self.increments[-self.window:]
 
@@ -130,8 +142,7 @@ class CycleJumper:
 
     # ------------------------------------------------------------------ saving
     def state(self):
-        s = {k: getattr(self, k) for k in ('window', 'steady', 'maxDamage', 'margin', 'growth', 'after', 'driftNoise',
-                                           'driftDamage', 'target', 'ids', 'direct', 'jumps', 'jumped', 'on')}
+        s = {k: getattr(self, k) for k in tuple(SETTINGS) + ('target', 'ids', 'direct', 'jumps', 'jumped', 'on')}
         s['last'] = _pack(self.last)
         s['increments'] = [_pack(a) for a in self.increments]
         s['pending'] = None if self.pending is None else dict(
@@ -141,8 +152,8 @@ class CycleJumper:
     @classmethod
     def fromState(cls, s, ref=None):
         # states saved before jumpDriftNoise or jumpDriftDamage existed: the rules of then (0)
-        j = cls(s['window'], s['steady'], s['maxDamage'], s['margin'], s['growth'], s['after'], s.get('driftNoise', 0.0),
-                s.get('driftDamage', 0.0))
+        before = {'driftNoise': 0.0, 'driftDamage': 0.0}
+        j = cls(**{k: s[k] if k in s else before[k] for k in SETTINGS})
         for k in ('target', 'ids', 'direct', 'jumps', 'jumped'):   # states of before also hold an unused 'extrapolated'
             setattr(j, k, s[k])
         j.on = s.get('on', True)
