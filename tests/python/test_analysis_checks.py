@@ -16,14 +16,16 @@ def test_applied_force_at_the_first_crush(tmp_path):
     # = 375 kN, whatever the order of the crushes in the file; a run without its loading parameters has none
     d = fabricateStudy(tmp_path / 's', more={'f': lambda i: 2.0, 'Fmax': lambda i: 1.5e6})
     runs = sorted(os.listdir(os.path.join(d, 'runs')))
-    for run in runs[:2]:
+    for run, crushes in zip(runs[:2], ('crushes', 'nCrushed')):   # the log of today; a record's of before 2026-12
         with open(os.path.join(d, 'runs', run, 'checks.csv'), 'w') as fh:
-            fh.write('t,iter,nCrushed,maxStressRatio\n0.1,10,2,1.2\n')
+            fh.write('t,iter,%s,maxStressRatio\n0.1,10,2,1.2\n' % crushes)
         with open(os.path.join(d, 'runs', run, 'crushes.csv'), 'w') as fh:
             fh.write('t,radius,ratio\n0.2,0.02,1.1\n%r,0.02,1.2\n0.3,0.01,1.1\n' % (1 / 12))
     s = {r.runId: r.summary for r in StudyData(d, param='Tc').runs}
     assert s[runs[0]]['forceAtFirstCrush'] == pytest.approx(375e3, rel=1e-12)
     assert s[runs[0]]['crushesAfterPeak'] == 1  # the applied peak is at 1/(2f) = 0.25 s: the crush at 0.3 s
+    for run in runs[:2]:   # one check crushed 2 grains, under either name of the column
+        assert s[run]['crushingChecks'] == 1 and s[run]['crushesPerCrushingCheck'] == 2
     assert 'forceAtFirstCrush' not in s[runs[2]]  # no log
     bare = fabricateStudy(tmp_path / 'bare')
     run = sorted(os.listdir(os.path.join(bare, 'runs')))[0]

@@ -46,7 +46,7 @@ def test_jumping_numbers_the_cycles_and_never_steps_over_the_first_crush(root, f
     assert s['cyclesSimulated'] == len(cyc) and s['cyclesSimulated'] + s['cyclesJumped'] == 14
     assert np.array_equal(cyc.cycle, np.arange(1, len(cyc) + 1) + cyc.jumped)
     assert list(cyc.cycle[:4]) == [1, 2, 3, 4]                        # the window's cycles, simulated
-    first = int(cyc.cycle[cyc.nCrushed > 0].iloc[0])                  # the first crush, a fatigue crush
+    first = int(cyc.cycle[cyc.crushes > 0].iloc[0])                  # the first crush, a fatigue crush
     assert s['nFatigueCrushed'] == s['nCrushed'] >= 1
     for _, e in jumps.iterrows():                                      # each jump ends before the cycle it fails in
         assert e.to + JUMP['jumpMargin'] + 1 < first or e.cycle >= first

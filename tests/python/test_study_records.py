@@ -61,7 +61,7 @@ def writeRun(d, n=20000):
         for k in range(n):
             fh.write('%.9g,%.9g,%.9g,%d,%d,%.9g\n' % tuple(c[q][k] for q in ('t', 'F', 'delta', 'nCrushed', 'nAbraded', 'Fapplied')))
     with open(os.path.join(d, 'checks.csv'), 'w') as fh:  # 1000 checks, the ratio a sine, crushes at 300 and 700
-        fh.write('t,iter,nCrushed,maxStressRatio\n')
+        fh.write('t,iter,crushes,maxStressRatio\n')
         for k in range(1000):
             fh.write('%g,%d,%d,%.9g\n' % (1e-3 * k, 100 * k, {300: 2, 700: 1}.get(k, 0), 0.8 + 0.6 * np.sin(np.pi * k / 1000)))
     for name, data in (('summary.json', {'params': {'seed': 1, 'f': 2.0}, 'deltaAtPeak': 0.06}), ('row.json', {'row': {'seed': 1}})):
@@ -91,7 +91,7 @@ def test_a_record_is_small_and_keeps_what_the_figures_and_tables_need(tmp_path):
     assert max(float(r['F']) for r in rows) == pytest.approx(np.max(c['F']), rel=1e-8)  # the peak, to the CSV's digits
     with open(os.path.join(dest, 'checks.csv'), newline='') as fh:
         checks = list(csv.DictReader(fh))
-    assert [(r['iter'], r['nCrushed']) for r in checks if r['nCrushed'] != '0'] == [('30000', '2'), ('70000', '1')]
+    assert [(r['iter'], r['crushes']) for r in checks if r['crushes'] != '0'] == [('30000', '2'), ('70000', '1')]
     # the ratio's curve to a step of its range (0.6): 1/200, doubled once here (200 steps up and 200 down are
     # more than 400 rows), so its running maximum is off by less than 0.006 at any check
     t = np.array([float(r['t']) for r in checks])
@@ -105,11 +105,11 @@ def test_a_record_is_small_and_keeps_what_the_figures_and_tables_need(tmp_path):
         info = json.load(fh)
     assert info['fdRows'] == {'run': 20000, 'record': len(rows)}
     assert info['checks'] == {'run': 1000, 'record': len(checks), 'crushing': 2, 'maxStressRatio': pytest.approx(1.4)}
-    assert len(thinChecks({'nCrushed': np.ones(1000), 'maxStressRatio': np.ones(1000)})) == 400  # crushes at every check
+    assert len(thinChecks({'crushes': np.ones(1000), 'maxStressRatio': np.ones(1000)})) == 400  # crushes at every check
     # f = 2 Hz: the check at half the peak load, t = 1/(4f) = 0.125 s, is kept (what halfLoadRatio reads)
     assert '12500' in [r['iter'] for r in checks]
     # a flat log keeps its ends and the two checks around a time between checks
-    flat = {'t': 1e-3 * np.arange(1000), 'nCrushed': np.zeros(1000), 'maxStressRatio': np.ones(1000)}
+    flat = {'t': 1e-3 * np.arange(1000), 'crushes': np.zeros(1000), 'maxStressRatio': np.ones(1000)}
     assert list(thinChecks(flat, times=[0.1255])) == [0, 125, 126, 999]
     assert list(thinChecks(flat, times=[2.0])) == [0, 999]  # after the last check: nothing more
     # the crushes with the ratio each crushed at, from events.csv (the abrasion left out)
@@ -125,7 +125,8 @@ def test_a_record_is_small_and_keeps_what_the_figures_and_tables_need(tmp_path):
 
 def test_the_experiment_says_which_checks_a_record_keeps_and_a_record_may_cut_its_summary(tmp_path):
     # checks every 1 ms with a flat ratio: a record keeps the ends, the crushes at 0.3 and 0.7 s and the two
-    # checks around each time the declaration names (here 0.4555 s: the checks at 0.455 and 0.456 s)
+    # checks around each time the declaration names (here 0.4555 s: the checks at 0.455 and 0.456 s); the log of a
+    # run of before 2026-12, whose count of crushes per check is named nCrushed
     run = str(tmp_path / 'run')
     writeRun(run)
     with open(os.path.join(run, 'checks.csv'), 'w') as fh:

@@ -27,9 +27,9 @@ def checkStats(run):
     every frequency), the crushes after the peak of the applied force (t > 1/(2f): what delta at the
     peak does not see), and stressRatioAtHalfLoad (halfLoadRatio). {} without a log."""
     c = run.checks
-    if c is None or 'nCrushed' not in c:
+    if c is None or 'crushes' not in c:
         return {}
-    crushed = column(c, 'nCrushed')
+    crushed = column(c, 'crushes')
     hit = crushed[crushed > 0]
     n = int(hit.size)
     out = dict.fromkeys(CHECK_STATS)

@@ -31,8 +31,9 @@ def curves(paths):
 
 
 def changedRows(cycles):
-    """Per row of cycles.csv whether a grain crushed or abraded in that cycle: the box's crushes and abrasions,
-    the oedometer's nCrushed and nAbraded (each a count in that cycle); None where the file has neither."""
+    """Per row of cycles.csv whether a grain crushed or abraded in that cycle: crushes and abrasions (each a count
+    in that cycle; the oedometer's records of before 2026-12 name them nCrushed and nAbraded, ballast.study.data.
+    LEGACY_COUNTS); None where the file has neither."""
     for crushed, abraded in (('crushes', 'abrasions'), ('nCrushed', 'nAbraded')):
         if crushed in cycles:
             return (cycles[crushed] + (cycles[abraded] if abraded in cycles else 0)).to_numpy() > 0

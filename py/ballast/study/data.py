@@ -18,6 +18,9 @@ from .table import cellValue
 
 # the CSV files of a run, each a property of Run (crushes: see Run.crushes)
 TABLES = ('fd', 'checks', 'events', 'cycles', 'psd')
+# the oedometer's counts per cycle and per check under the names they had before 2026-12 (nCrushed, nAbraded: the
+# engines' running totals, as fd.csv and the box's cycles.csv still use them), read under today's
+LEGACY_COUNTS = {'cycles': {'nCrushed': 'crushes', 'nAbraded': 'abrasions'}, 'checks': {'nCrushed': 'crushes'}}
 
 
 def readTable(path):
@@ -71,7 +74,10 @@ class Run:
     def table(self, name):
         """<name>.csv of the run as a DataFrame (None without it), read once."""
         if name not in self._tables:
-            self._tables[name] = readTable(os.path.join(self.dir, name + '.csv'))
+            t = readTable(os.path.join(self.dir, name + '.csv'))
+            if t is not None and 'crushes' not in t:   # a record of before the names of today (LEGACY_COUNTS)
+                t = t.rename(columns=LEGACY_COUNTS.get(name, {}))
+            self._tables[name] = t
         return self._tables[name]
 
     fd = property(lambda self: self.table('fd'), doc='fd.csv: the force-displacement curve')

@@ -106,7 +106,7 @@ def thinChecks(columns, maxRows=MAX_CHECK_ROWS, times=()):
         around = sorted(set(int(i) for x in times for i in (np.searchsorted(t, x, 'right') - 1, np.searchsorted(t, x, 'left'))
                             if 0 <= i < len(t)))  # on top of maxRows: they do not coarsen the rest
     return thinCurve(columns, [q for q in ('maxStressRatio', 'maxCrushableRatio') if q in columns],
-                     list(np.flatnonzero(np.asarray(columns['nCrushed']) > 0)) + around, maxRows + len(around))
+                     list(np.flatnonzero(np.asarray(columns['crushes']) > 0)) + around, maxRows + len(around))
 
 
 def keptLines(path, rows):
@@ -164,7 +164,7 @@ def thinned(run, runDir, tmp, info, decl):
         times = decl.recordTimes(run.params) if run.params else ()
         kept = thinChecks(cols, times=times) if n else []
         writeAtomic(os.path.join(tmp, 'checks.csv'), keptLines(os.path.join(runDir, 'checks.csv'), kept))
-        info['checks'] = {'run': n, 'record': int(len(kept)), 'crushing': int(np.sum(cols['nCrushed'] > 0)) if n else 0,
+        info['checks'] = {'run': n, 'record': int(len(kept)), 'crushing': int(np.sum(cols['crushes'] > 0)) if n else 0,
                           'maxStressRatio': float(np.max(cols['maxStressRatio'])) if n else None}
     if run.crushes is not None:
         rows = zip(*(column(run.crushes, c) for c in ('t', 'radius', 'ratio')))

@@ -21,9 +21,9 @@ from ...study.files import saveFigure, writeAtomic
 from ...settlementlaws import settlementJumped
 
 FD_COLUMNS = ('t', 'F', 'delta', 'nCrushed', 'nAbraded', 'Fapplied')
-CHECK_COLUMNS = ('t', 'iter', 'nCrushed', 'maxStressRatio', 'maxCrushableRatio', 'inertialNumber')
+CHECK_COLUMNS = ('t', 'iter', 'crushes', 'maxStressRatio', 'maxCrushableRatio', 'inertialNumber')
 INERTIAL_BOUND = 1e-3  # [-] the quasi-static regime's inertial number (GDR MiDi 2004): above it a run warns
-CYCLE_COLUMNS = ('cycle', 't', 'settlement', 'resilient', 'nCrushed', 'nAbraded', 'Bg', 'maxDamage')
+CYCLE_COLUMNS = ('cycle', 't', 'settlement', 'resilient', 'crushes', 'abrasions', 'Bg', 'maxDamage')
 EVENT_COLUMNS = ('kind', 't', 'iter', 'id', 'x', 'y', 'z', 'radius', 'value', 'strength', 'newIds', 'EkBefore',
                  'EeBefore', 'EkAfter', 'EeAfter', 'EkGrown', 'EeGrown')
 ENERGY_KEYS = ('energyBefore', 'energyAfter', 'energyGrown')  # [kinetic, elastic] [J] of a replacement
