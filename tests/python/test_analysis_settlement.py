@@ -10,14 +10,18 @@ import pytest
 from ballast.analysis import settlement
 
 
-def study(root, curves):
-    """A records folder with one run per curve {runId: (seed, settlements)}."""
+def study(root, curves, continueFrom=None):
+    """A records folder with one run per curve {runId: (seed, settlements)}; continueFrom {runId: the runId whose
+    end state it continued from}."""
     rows = []
     for k, (rid, (seed, s)) in enumerate(curves.items()):
         d = os.path.join(root, 'runs', rid)
         os.makedirs(d)
+        params = {'seed': seed, 'continueFrom': ''}
+        if continueFrom and rid in continueFrom:   # as a slice's row names it: a path through the records
+            params['continueFrom'] = '/elsewhere/docs/studies/box/runs/%s/state-end.yade.gz' % continueFrom[rid]
         with open(os.path.join(d, 'summary.json'), 'w') as fh:
-            json.dump({'settlement': s[-1], 'params': {'seed': seed}}, fh)
+            json.dump({'settlement': s[-1], 'params': params}, fh)
         with open(os.path.join(d, 'cycles.csv'), 'w') as fh:
             fh.write('cycle,settlement,resilient\n' + ''.join('%d,%r,1e-6\n' % (n + 1, v) for n, v in enumerate(s)))
         rows.append({'line': k + 2, 'runId': rid, 'row': {'seed': str(seed)}})
@@ -41,3 +45,32 @@ def test_the_mean_over_runs_and_its_law(tmp_path):
     assert math.isfinite(f['settlementLast'])
     with pytest.raises(ValueError, match='no run with a cycles.csv'):
         settlement.curves([])
+
+
+def test_a_realization_run_in_slices_counts_once_as_its_last_slice(tmp_path):
+    # seed 1 in two slices (cycles 1-4, then 1-8: a slice's cycles.csv holds the earlier ones), seed 2 in one of 8
+    # cycles: two runs to cycle 8, the mean of 1 + n and 3 + n at cycle n
+    one = [1e-4 * (1 + n) for n in range(1, 9)]
+    two = [1e-4 * (3 + n) for n in range(1, 9)]
+    root = study(str(tmp_path / 'box'), {'s1-c4': (1, one[:4]), 's1-c8': (1, one), 's2-c8': (2, two)},
+                 continueFrom={'s1-c8': 's1-c4'})
+    frame = settlement.curves([root])
+    assert sorted(frame.runId.unique()) == ['s1-c8', 's2-c8']
+    f = settlement.summary(frame)[root]
+    assert f['runs'] == 2 and f['cycles'] == 8 and f['settlementLast'] == pytest.approx(1e-4 * (2 + 8), rel=1e-12)
+
+
+def test_a_realization_read_apart_is_fitted_and_drawn_but_left_out_of_the_mean(tmp_path):
+    # seeds 1 and 3 settle as 1e-4 (1 + ln N) and 1e-4 (3 + ln N); seed 2's sleeper tips (its centre rises):
+    # apart, the mean is 1e-4 (2 + ln N) exactly and seed 2 keeps its own laws
+    N = np.arange(1, 9)
+    root = study(str(tmp_path / 'box'), {'s1': (1, list(1e-4 * (1 + np.log(N)))), 's2': (2, list(-1e-4 * N)),
+                                         's3': (3, list(1e-4 * (3 + np.log(N))))})
+    frame = settlement.curves([root], apart=[2])
+    f = settlement.summary(frame)[root]
+    assert f['runs'] == 2 and f['apart'] == ['s2'] and set(f['perRun']) == {'s1', 's2', 's3'}
+    assert f['mean']['log']['a'] == pytest.approx(2e-4, rel=1e-9) and f['mean']['log']['b'] == pytest.approx(1e-4, rel=1e-9)
+    assert settlement.summary(settlement.curves([root]))[root]['runs'] == 3   # none apart: all three
+    assert os.path.isfile(settlement.figure(frame, {root: f}, str(tmp_path / 'settlement.png')))
+    with pytest.raises(ValueError, match='every run of .* is read apart'):
+        settlement.summary(settlement.curves([root], apart=[1, 2, 3]))

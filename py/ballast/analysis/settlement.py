@@ -4,6 +4,7 @@ every run's curve, their mean per cycle, and the two laws box tests are read wit
 logarithmic s = a + b ln N and power s = c N^d, with their R^2 (the first cycle's settlement is a's and
 c's share: both laws pass through N = 1). Reads the studies with ballast.study.data. NumPy, no YADE."""
 import math
+import os
 
 import numpy as np
 import pandas as pd
@@ -12,19 +13,33 @@ from ..settlementlaws import fitLaws, settlementJumped
 from ..study.data import StudyRuns
 
 
-def curves(paths):
-    """The settlement curves of the finished runs of the studies (or records) at `paths`: a DataFrame with
-    study, runId, seed, cycle, settlement [m], resilient [m] (NaN where a run has none)."""
+def continued(runs):
+    """The runIds of the runs another of `runs` continued from (its continueFrom is a state in their folder): the
+    slices of a realization run in slices, whose last slice's cycles.csv holds every cycle of the earlier ones."""
+    return {os.path.basename(os.path.dirname(os.path.normpath(r.params['continueFrom'])))
+            for r in runs if r.params.get('continueFrom')}
+
+
+def curves(paths, apart=()):
+    """The settlement curves of the finished runs of the studies (or records) at `paths`, a realization run in
+    slices once, as its last slice: a DataFrame with study, runId, seed, cycle, settlement [m], resilient [m]
+    (NaN where a run has none) and apart (the seed is one of `apart`: a realization read apart, left out of the
+    mean, for example a sleeper that tips instead of settling)."""
     rows = []
     for path in paths:
         study = StudyRuns(path)
+        earlier = continued(study.runs)
         for run in study.runs:
+            if run.runId in earlier:
+                continue
             c = run.cycles
             if c is None or 'settlement' not in c:
                 continue
-            rows.append(pd.DataFrame({'study': path, 'runId': run.runId, 'seed': run.params.get('seed'),
+            seed = run.params.get('seed')
+            rows.append(pd.DataFrame({'study': path, 'runId': run.runId, 'seed': seed,
                                       'cycle': c['cycle'].astype(int), 'settlement': total(c),
-                                      'resilient': c['resilient'] if 'resilient' in c else math.nan}))
+                                      'resilient': c['resilient'] if 'resilient' in c else math.nan,
+                                      'apart': seed in apart}))
     if not rows:
         raise ValueError('curves: no run with a cycles.csv (cycle, settlement) in %s' % ', '.join(paths))
     return pd.concat(rows, ignore_index=True)
@@ -54,17 +69,20 @@ def total(cycles):
 
 
 def summary(frame):
-    """Per study: the mean and standard deviation of the settlement at every cycle all its runs reached, the
-    laws fitted to the mean and to each run."""
+    """Per study: the mean and standard deviation of the settlement at every cycle all its runs reached (those read
+    apart left out), the laws fitted to the mean and to each run (those apart too)."""
     out = {}
-    for study, g in frame.groupby('study', sort=False):
+    for study, every in frame.groupby('study', sort=False):
+        g = every[~every.apart] if 'apart' in every else every
+        if g.empty:
+            raise ValueError('summary: every run of %s is read apart; nothing left to average' % study)
         last = int(g.groupby('runId').cycle.max().min())
         common = g[g.cycle <= last]
         mean = common.groupby('cycle').settlement.agg(['mean', 'std', 'count']).reset_index()
-        out[study] = {'runs': int(g.runId.nunique()), 'cycles': last,
+        out[study] = {'runs': int(g.runId.nunique()), 'apart': sorted(set(every.runId) - set(g.runId)), 'cycles': last,
                       'settlementFirst': float(mean['mean'].iloc[0]), 'settlementLast': float(mean['mean'].iloc[-1]),
                       'mean': fitLaws(mean.cycle, mean['mean']) if last >= 3 else None,
-                      'perRun': {rid: fitLaws(r.cycle, r.settlement) for rid, r in g.groupby('runId') if len(r) >= 3}}
+                      'perRun': {rid: fitLaws(r.cycle, r.settlement) for rid, r in every.groupby('runId') if len(r) >= 3}}
     return out
 
 
@@ -77,10 +95,14 @@ def figure(frame, fits, path):
     fig, ax = plt.subplots(figsize=(6.6, 4.4))
     for k, (study, g) in enumerate(frame.groupby('study', sort=False)):
         colour = 'C%d' % k
-        for _, r in g.groupby('runId'):
-            ax.semilogx(r.cycle, 1e3 * r.settlement, '-', color=colour, lw=0.6, alpha=0.5)
+        for rid, r in g.groupby('runId'):
+            away = bool(r.apart.iloc[0]) if 'apart' in r else False
+            ax.semilogx(r.cycle, 1e3 * r.settlement, ':' if away else '-', color='0.4' if away else colour,
+                        lw=0.9 if away else 0.6, alpha=0.8 if away else 0.5,
+                        label='%s: read apart' % rid if away else None)
         f = fits[study]
-        mean = g[g.cycle <= f['cycles']].groupby('cycle').settlement.mean()
+        inMean = g[~g.apart] if 'apart' in g else g
+        mean = inMean[inMean.cycle <= f['cycles']].groupby('cycle').settlement.mean()
         ax.semilogx(mean.index, 1e3 * mean.values, '-', color=colour, lw=2.2,
                     label='%s: mean of %d runs' % (study.rstrip('/').split('/')[-1], f['runs']))
         if f['mean'] is not None:
