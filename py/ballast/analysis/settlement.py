@@ -46,13 +46,12 @@ def curves(paths, apart=()):
 
 
 def changedRows(cycles):
-    """Per row of cycles.csv whether a grain crushed or abraded in that cycle: crushes and abrasions (each a count
-    in that cycle; the oedometer's records of before 2026-12 name them nCrushed and nAbraded, ballast.study.data.
-    LEGACY_COUNTS); None where the file has neither."""
-    for crushed, abraded in (('crushes', 'abrasions'), ('nCrushed', 'nAbraded')):
-        if crushed in cycles:
-            return (cycles[crushed] + (cycles[abraded] if abraded in cycles else 0)).to_numpy() > 0
-    return None
+    """Per row of cycles.csv whether a grain crushed or abraded in that cycle (crushes and abrasions, each a count in
+    that cycle; records of before 2026-12 read through ballast.study.data get these names: LEGACY_COUNTS); None
+    where the file has neither."""
+    if 'crushes' not in cycles:
+        return None
+    return (cycles['crushes'] + (cycles['abrasions'] if 'abrasions' in cycles else 0)).to_numpy() > 0
 
 
 def jumpedSettlement(cycles):
