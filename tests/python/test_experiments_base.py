@@ -94,3 +94,19 @@ def test_save_and_reopen_through_the_runtime(tmp_path):
         Drop.reopen(f, height=2.0)
     goes = Drop.reopen(f, results=str(tmp_path / 'more'))
     assert os.path.basename(goes.dir.create()) == 'drop'          # named after the run it continues
+
+
+def test_a_state_is_a_level_1_gzip_stream_yade_reads_with_nothing_left_beside_it(tmp_path):
+    """Experiment.save writes YADE's uncompressed archive through gzip at level 1 (XFL 4: the fastest
+    compression) without a name or a time stamp (FLG 0, MTIME 0); YADE loads it; no temporary file stays."""
+    exp = Drop(height=1.0, results=str(tmp_path), runId='drop')
+    exp.prepare()
+    exp.runUntil(tEnd=0.01, phase='fall')
+    f = str(tmp_path / 'a.yade.gz')
+    exp.save(f)
+    with open(f, 'rb') as fh:
+        head = fh.read(10)
+    assert head[:4] == b'\x1f\x8b\x08\x00' and head[4:8] == b'\0\0\0\0' and head[8] == 4
+    assert sorted(os.listdir(tmp_path)) == ['a.yade.gz']
+    O.load(f)
+    assert O.iter == 100 and len(O.bodies) == 1

@@ -2,6 +2,7 @@
 restore through one path, and the refusal of states of the older format."""
 import json
 import os
+import struct
 import subprocess
 import sys
 import textwrap
@@ -147,3 +148,18 @@ def test_a_damaged_document_is_refused_in_one_line(tag, words):
         runtime.restore()
     assert words in str(e.value) and "O.tags['ballast']" in str(e.value) and '\n' not in str(e.value)
     O.reset()
+
+
+def test_rows_pack_bitwise_with_their_ints_and_come_back_through_json():
+    """A record as a state holds it (packRows): every float to the bit (NaN, infinities, -0.0, the smallest
+    subnormal), ints back as ints; a list of rows of a state of before as tuples; rows of unequal length kept."""
+    rows = [(0.1, 3, float('nan'), -0.0), (1e-300, -7, float('inf'), 5e-324), (2.0 / 3.0, 2 ** 40, -float('inf'), 1.0)]
+    packed = json.loads(json.dumps(runtime.packRows(rows)))
+    back = runtime.unpackRows(packed)
+    assert packed['ints'] == [1] and len(back) == 3
+    for r, b in zip(rows, back):
+        assert [type(v) for v in b] == [float, int, float, float]
+        assert struct.pack('<4d', *r) == struct.pack('<4d', *b)
+    assert runtime.unpackRows([[1, 2.5], [3, 4.5]]) == [(1, 2.5), (3, 4.5)]
+    ragged = [(1.0, 2), (1.0, 2, 3.0)]
+    assert runtime.packRows(ragged) == [[1.0, 2], [1.0, 2, 3.0]] and runtime.unpackRows(runtime.packRows([])) == []

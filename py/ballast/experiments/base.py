@@ -25,6 +25,7 @@ offers cycle jumping (``jump``, docs/cycles.md) with :meth:`startJumping` when i
 import gzip
 import json
 import os
+import shutil
 import socket
 import time
 import zlib
@@ -283,7 +284,18 @@ class Experiment:
         folder, name = os.path.split(os.path.abspath(path))
         tmp = os.path.join(folder, '.tmp-%d-%s' % (os.getpid(), name))  # the same suffix: YADE compresses by it
         try:
-            O.save(tmp)
+            if path.endswith('.gz'):   # YADE's gzip is 5 x slower than level 1 for a state 10 % smaller
+                raw = tmp[:-3]
+                try:
+                    O.save(raw)
+                    with open(raw, 'rb') as src, open(tmp, 'wb') as dst, \
+                            gzip.GzipFile(filename='', mode='wb', compresslevel=1, fileobj=dst, mtime=0) as gz:
+                        shutil.copyfileobj(src, gz, 1 << 22)
+                finally:
+                    if os.path.exists(raw):
+                        os.remove(raw)
+            else:
+                O.save(tmp)
             fd = os.open(tmp, os.O_RDONLY)
             try:
                 os.fsync(fd)

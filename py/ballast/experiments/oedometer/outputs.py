@@ -92,13 +92,14 @@ class Outputs:
         self.exp = self.fd = None   # the Probe; fd.csv, opened at the first row written
 
     def state(self):
-        return {'rows': self.rows, 'checkRows': self.checkRows, 'vtkFrames': self.vtkFrames, 'cycleRows': self.cycleRows}
+        return {'rows': runtime.packRows(self.rows), 'checkRows': runtime.packRows(self.checkRows),
+                'vtkFrames': self.vtkFrames, 'cycleRows': self.cycleRows}
 
     @classmethod
     def fromState(cls, s, ref=None):
         obj = cls()
-        obj.rows = [tuple(r) for r in s['rows']]
-        obj.checkRows = [tuple(r) for r in s['checkRows']]
+        obj.rows = runtime.unpackRows(s['rows'])
+        obj.checkRows = runtime.unpackRows(s['checkRows'])
         obj.vtkFrames = [tuple(f) for f in s['vtkFrames']]
         obj.cycleRows = [tuple(r) for r in s['cycleRows']]
         return obj
