@@ -163,3 +163,5 @@ def test_rows_pack_bitwise_with_their_ints_and_come_back_through_json():
     assert runtime.unpackRows([[1, 2.5], [3, 4.5]]) == [(1, 2.5), (3, 4.5)]
     ragged = [(1.0, 2), (1.0, 2, 3.0)]
     assert runtime.packRows(ragged) == [[1.0, 2], [1.0, 2, 3.0]] and runtime.unpackRows(runtime.packRows([])) == []
+    mixed = [(1.0, 2), (1.0, 2.5)]                     # begun with an int, then a fraction: not cut to 2
+    assert runtime.unpackRows(json.loads(json.dumps(runtime.packRows(mixed)))) == mixed
