@@ -57,10 +57,7 @@ def main(argv):
             save(path)
             cpu.append(time.process_time() - t)
         out[kind] = {'cpuSeconds': min(cpu), 'bytes': os.path.getsize(path), 'path': path}
-    loaded = {}
-    for kind in out:
-        O.load(out[kind]['path'])
-        loaded[kind] = [o for o in runtime.current().objects.values() if type(o).__name__ == 'Outputs'][0].rows
+    loaded = {kind: Oedometer.reopen(out[kind]['path'], readOnly=True).outputs.rows for kind in out}
     result = {'cycles': a.cycles, 'rows': rows, 'before': out['before'], 'now': out['now'],
               'speedup': out['before']['cpuSeconds'] / out['now']['cpuSeconds'],
               'sameRows': loaded['before'] == loaded['now']}

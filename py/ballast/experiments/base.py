@@ -201,6 +201,8 @@ class Experiment:
         simSpan, simStart, extra, afterChunk (see Phases.run)."""
         if condition is None and tEnd is None:
             raise ParamError('tEnd', '%s.runUntil: give a condition or tEnd [s], else it never ends' % self.NAME)
+        if self.jumper is not None:   # the jumps shorten what is simulated: no share of it, no time left
+            progress.pop('simSpan', None)
         self.phases.run(phase, condition, tEnd=tEnd, checkEvery=checkEvery, **progress)
 
     def addEngines(self, t0):
@@ -310,6 +312,7 @@ class Experiment:
             self.dir.writeStatus(self.status, lastState=os.path.basename(path), iter=O.iter, time=O.time)
 
     status = None  # 'running' between markRunning and markFinished
+    jumper = None  # the CycleJumper piece of a run with cycle jumping (startJumping)
 
     def markRunning(self, **info):
         """run.json says 'running' (with the process, so that a killed run is told from a live one)."""

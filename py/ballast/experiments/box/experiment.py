@@ -293,8 +293,7 @@ class BoxTest(Experiment):
             n, p.history().source, p.history().seat, p.history().peak, rec.period, O.dt, rec.period / O.dt))
 
         self.runUntil(lambda: self.cyclesDone() >= target or self.onFloor, tEnd=tEnd + 2 * rec.period / p['samples'],
-                      phase='load', checkEvery=50, simStart=O.time,
-                      simSpan=tEnd - O.time if self.jumper is None else None,   # jumping: not known ahead
+                      phase='load', checkEvery=50, simSpan=tEnd - O.time, simStart=O.time,
                       extra=lambda: 'cycle %d of %d, settlement %.2f mm, %d crushed, %d abraded' % (
                           self.cyclesDone(), target, 1e3 * (rec.samples[-1][4] if rec.samples else 0),
                           rec.samples[-1][6] if rec.samples else 0, rec.samples[-1][7] if rec.samples else 0))

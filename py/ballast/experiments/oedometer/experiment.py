@@ -131,9 +131,7 @@ class Oedometer(Experiment):
         # each jump brings the end nearer by the cycles it jumped
         end = tEnd if self.jumper is None or self.stoppedBy == 'stopAt' else (
             lambda: t0 + (total - self.cyclesJumped()) * self.T)
-        # jumping: how much is simulated is not known ahead (the progress line's cycle count says how far)
-        self.runUntil(self.stopCondition(), tEnd=end, phase='load', simStart=tStart,
-                      simSpan=tEnd - tStart if self.jumper is None else None,
+        self.runUntil(self.stopCondition(), tEnd=end, phase='load', simSpan=tEnd - tStart, simStart=tStart,
                       extra=lambda: 'cycle %d/%d  F=%.0f kN  delta=%.1f mm  crushed %d  abraded %d' % (
                           min(math.floor((O.time - t0) / self.T) + 1 + self.cyclesJumped(), total), total,
                           self.loading.force() / 1e3, self.loading.delta() * 1e3, self.counter('crush', 'nCrushed'),
