@@ -6,7 +6,8 @@ test_study_study.py): it keeps the oedometer's command-line contract,
 
 builds the packing its row needs when it is not stored, and writes DIR/ID/summary.json, fd.csv and
 seen.json (what it was given). The environment variable FAKE (a '!FAKE' column of the table) makes
-it fail (exit 3, leaving a partial output), hang (with a child process; both pids in pids.json),
+it fail (exit 3, leaving a partial output), hang (with a child process; both pids in pids.json, and in
+the file FAKE_PIDS names if set),
 end without a summary, with a summary cut in half (exit 0 both), or be killed by SIGKILL mid-run."""
 import json
 import os
@@ -43,9 +44,11 @@ if mode == 'fail':
     sys.exit(3)
 if mode == 'hang':
     helper = subprocess.Popen(['sleep', '120'])
-    with open(os.path.join(out, 'pids.json.tmp'), 'w') as fh:
-        json.dump({'yade': os.getpid(), 'helper': helper.pid}, fh)
-    os.replace(os.path.join(out, 'pids.json.tmp'), os.path.join(out, 'pids.json'))
+    # FAKE_PIDS: a copy that outlives the run's folder (a stopped run's is removed)
+    for path in filter(None, [os.path.join(out, 'pids.json'), os.environ.get('FAKE_PIDS')]):
+        with open(path + '.tmp', 'w') as fh:
+            json.dump({'yade': os.getpid(), 'helper': helper.pid}, fh)
+        os.replace(path + '.tmp', path)
     time.sleep(120)
 if mode == 'nosummary':
     sys.exit(0)

@@ -133,7 +133,9 @@ def test_a_run_past_its_timeout_or_stopped_is_killed_with_its_children(spec, why
     if why == 'stopped':
         threading.Timer(0.3, runner.STOP.set).start()
     try:
-        res = runner.runRow(dict(spec, env={'FAKE': 'hang'}, timeout=0.3 if why == 'timeout' else None))
+        pidFile = os.path.join(os.path.dirname(spec['out']), 'fake-pids.json')
+        res = runner.runRow(dict(spec, env={'FAKE': 'hang', 'FAKE_PIDS': pidFile},
+                                 timeout=0.3 if why == 'timeout' else None))
         if why == 'stopped':
             assert runner.runRow(spec) is None  # the study stopped before this run's turn: it does not start
     finally:
@@ -144,8 +146,9 @@ def test_a_run_past_its_timeout_or_stopped_is_killed_with_its_children(spec, why
     assert ('(FAILED)' if why == 'timeout' else '(STOPPED)') in log
     # a timeout is a failure (kept in failed/), a stopped run is simply redone
     assert os.path.isdir(os.path.join(spec['out'], 'failed', spec['runId'])) == (why == 'timeout')
-    ps = [l.split() for l in os.popen('ps -eo pid,args').read().splitlines()[1:]]
-    assert not [p for p in ps if p[1:] == ['sleep', '120'] and not processGone(int(p[0]))]
+    with open(pidFile) as fh:  # this run's own processes, not any 'sleep 120' on the machine
+        pids = json.load(fh)
+    assert waitUntil(lambda: all(processGone(pid) for pid in pids.values()), 5), pids
 
 
 def childrenOf(pid):
