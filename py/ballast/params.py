@@ -327,6 +327,10 @@ CYCLE_JUMP = {
                              *coreRange('jumpDriftDamage')),
     'jumpAfter': Param(0, 'cycles', 'no jump before this cycle: the cycles a bed needs to shake down, simulated',
                        intBetween(0, 10 ** 9), 'an integer in [0, 10^9]'),
+    'jumpStates': Param('all', '-', "the states saved around each jump (state-jump<K>-before/after.yade.gz, each the "
+                        "size of a state): 'all' keeps every jump's pair, 'last' only the latest jump's (the pair before "
+                        "is removed once the new one is written, its names blanked in jumps.csv)", choice('all', 'last'),
+                        "'all' or 'last'", text),
 }
 
 

@@ -50,6 +50,24 @@ def test_a_jumped_run_reaches_its_cycles_and_records_every_jump(jumped):
         assert os.path.isfile(os.path.join(test.out, name))
 
 
+def test_keeping_the_last_jumps_states_only_changes_nothing_else(jumped, tmp_path, beds):
+    """jumpStates 'last': the same cycles and jumps, only the latest jump's two states left on disk."""
+    test, _ = jumped
+    last = BoxTest(results=str(tmp_path), runId='last', bedDir=beds, jumpStates='last', **WEAK, **JUMP)
+    last.run()
+    read = lambda t, name: pd.read_csv(os.path.join(t.out, name))  # noqa: E731
+    ref, got = read(test, 'jumps.csv'), read(last, 'jumps.csv')
+    assert len(ref) >= 2, 'the run needs two jumps for an earlier pair to be removed'
+    names = ['stateBefore', 'stateAfter']
+    pd.testing.assert_frame_equal(ref.drop(columns=names), got.drop(columns=names), check_exact=True)
+    pd.testing.assert_frame_equal(read(test, 'cycles.csv').drop(columns='cpuSeconds'),
+                                  read(last, 'cycles.csv').drop(columns='cpuSeconds'), check_exact=True)
+    assert got[names].iloc[:-1].isna().all().all() and list(got[names].iloc[-1]) == list(ref[names].iloc[-1])
+    onDisk = sorted(f for f in os.listdir(last.out) if f.startswith('state-jump'))
+    assert onDisk == sorted(ref[names].iloc[-1]) and not any('state-jump' in f and os.path.basename(f) not in onDisk
+                                                             for f in last.saved)
+
+
 def test_a_jump_moves_every_grains_damage_within_its_bound_and_nothing_else(jumped):
     from yade import O
     from ballast.experiments import chain, grains

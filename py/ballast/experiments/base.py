@@ -264,9 +264,20 @@ class Experiment:
         e = self.jumper.apply(chain.engine('crush'), before, after)
         self.jumped(e['cycles'])
         self.save(os.path.join(self.out, after))
+        if self.p['jumpStates'] == 'last' and k > 1:
+            self.forgetJumpStates(self.jumper.jumps[-2])
         self.jumper.writeLog(os.path.join(self.out, 'jumps.csv'))
         self.say('jump %d: cycles %d -> %d (bound: %s), largest damage rate %.3g a cycle, settlement %+.4f mm '
                  'extrapolated' % (k, e['cycle'], e['to'], e['limit'], e['maxRate'], 1e3 * e['settlementJumped']))
+
+    def forgetJumpStates(self, jump):
+        """Remove the states saved around an earlier jump (jumpStates 'last'); its log row keeps no names."""
+        for key in ('stateBefore', 'stateAfter'):
+            path = os.path.join(self.out, jump[key])
+            if jump[key] and os.path.exists(path):   # a run continued elsewhere wrote it in its own folder
+                os.remove(path)
+            self.saved = [f for f in self.saved if f != path]
+            jump[key] = ''
 
     def jumped(self, cycles):
         """After a jump of `cycles` (subclasses whose own records count cycles move them on)."""
