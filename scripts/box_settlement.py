@@ -3,13 +3,18 @@
 docs/box.md, "The study"):
 
     scripts/box_settlement.py docs/studies/box [docs/studies/box-f3 ...] --out docs/studies/box [--apart 2]
+        [--reference docs/studies/box --at 1 5 10 25 50]
 
 writes settlement.csv (every run's curve), settlement.json (per study: the mean curve's and every run's
-logarithmic and power laws with R^2) and settlement.png."""
+logarithmic and power laws with R^2) and settlement.png; with --reference, each other study's runs against the
+reference's of the same seed at the cycles --at: settlement-paired.csv (per seed and cycle) and
+settlement-paired.json (per cycle: the mean difference with its 95 % interval, the mean ratio)."""
 import argparse
 import json
 import os
 import sys
+
+import pandas as pd
 
 from ballast.analysis import settlement
 from ballast.study.options import StudyError
@@ -21,17 +26,37 @@ def main(argv=None):
     ap.add_argument('--out', required=True, help='where settlement.csv, settlement.json and settlement.png go')
     ap.add_argument('--apart', type=int, nargs='+', default=[], metavar='SEED',
                     help='realizations read apart (drawn, fitted, left out of the mean), e.g. a sleeper that tips')
+    ap.add_argument('--reference', metavar='STUDY', help='a study (read too if not listed) whose runs the others '
+                    'are compared with, seed by seed (the same bed)')
+    ap.add_argument('--at', type=int, nargs='+', default=[1, 10, 100], metavar='N',
+                    help='the cycles of the paired comparison (default: 1 10 100)')
     a = ap.parse_args(argv)
+    if a.reference and a.reference not in a.studies:
+        a.studies.append(a.reference)
     try:
         frame = settlement.curves(a.studies, apart=a.apart)
         fits = settlement.summary(frame)
+        pairs = {study: settlement.paired(frame, study, a.reference, a.at) for study in a.studies
+                 if a.reference and study != a.reference}
     except (StudyError, ValueError) as e:
         print('box_settlement.py: %s' % e, file=sys.stderr)
         return 2
     os.makedirs(a.out, exist_ok=True)
     frame.to_csv(os.path.join(a.out, 'settlement.csv'), index=False, float_format='%.9g')
+    if pairs:
+        rows = [r.assign(study=study) for study, (r, _) in pairs.items()]
+        pd.concat(rows, ignore_index=True).to_csv(os.path.join(a.out, 'settlement-paired.csv'), index=False,
+                                                  float_format='%.9g')
+        with open(os.path.join(a.out, 'settlement-paired.json'), 'w') as fh:
+            json.dump({study: {'reference': a.reference, 'perCycle': per} for study, (_, per) in pairs.items()}, fh,
+                      indent=1)
     with open(os.path.join(a.out, 'settlement.json'), 'w') as fh:
         json.dump(fits, fh, indent=1)
+    for study, (_, per) in pairs.items():
+        for c in per:
+            print('%s against %s, cycle %d (%d seeds): difference %+.4f mm (95 %%: +-%.4f), ratio %.3f' % (
+                study, a.reference, c['cycle'], c['seeds'], 1e3 * c['meanDifference'], 1e3 * c['interval95'],
+                c['meanRatio']))
     for study, f in fits.items():
         law = (f['mean'] or {}).get('log')
         print('%s: %d runs to cycle %d%s, settlement %.3f mm after cycle 1, %.3f mm after %d%s' % (

@@ -74,3 +74,38 @@ def test_a_realization_read_apart_is_fitted_and_drawn_but_left_out_of_the_mean(t
     assert os.path.isfile(settlement.figure(frame, {root: f}, str(tmp_path / 'settlement.png')))
     with pytest.raises(ValueError, match='every run of .* is read apart'):
         settlement.summary(settlement.curves([root], apart=[1, 2, 3]))
+
+
+def test_two_studies_are_compared_seed_by_seed_at_the_cycles_asked(tmp_path, capsys):
+    # reference: seed k settles 1e-4 k (1 + ln N); the study: 1.1 times that for seeds 1-3 (differences 1e-5 k
+    # (1 + ln N), mean over k = 1..3 is 2e-5 (1 + ln N), standard deviation 1e-5 (1 + ln N), t(0.975, 2) = 4.303)
+    # and seed 4 tipping (read apart: flagged, out of the mean); seed 5 only in the reference: no pair
+    N = np.arange(1, 31)
+    ref = study(str(tmp_path / 'ref'), {'r%d' % k: (k, list(1e-4 * k * (1 + np.log(N)))) for k in range(1, 6)})
+    runs = {'s%d' % k: (k, list(1.1e-4 * k * (1 + np.log(N[:25])))) for k in range(1, 4)}
+    runs['s4'] = (4, list(-1e-4 * N[:25]))
+    mine = study(str(tmp_path / 'mine'), runs)
+    rows, per = settlement.paired(settlement.curves([mine, ref], apart=[4]), mine, ref, [1, 10, 25, 30])
+    assert sorted(set(rows.cycle)) == [1, 10, 25] and set(rows.seed) == {1, 2, 3, 4}   # cycle 30: the study stops
+    assert list(rows[rows.seed == 4].apart) == [True] * 3
+    np.testing.assert_allclose(rows[~rows.apart].ratio, 1.1, rtol=1e-12)
+    for c in per:
+        g = 1 + math.log(c['cycle'])
+        assert c['seeds'] == 3 and c['meanDifference'] == pytest.approx(2e-5 * g, rel=1e-9)
+        assert c['interval95'] == pytest.approx(4.302653 * 1e-5 * g / math.sqrt(3), rel=1e-6)
+        assert c['meanRatio'] == pytest.approx(1.1, rel=1e-12)
+    # two realizations of one seed in a study: refused, named
+    twice = study(str(tmp_path / 'twice'), {'a': (1, [1e-4, 2e-4]), 'b': (1, [1e-4, 3e-4])})
+    with pytest.raises(ValueError, match=r'holds 2 runs of seed 1 \(a, b\)'):
+        settlement.paired(settlement.curves([twice, ref]), twice, ref, [1])
+    # the command line: the reference read though not listed, its files written
+    import runpy
+    script = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), 'scripts',
+                          'box_settlement.py')
+    main = runpy.run_path(script)['main']
+    out = str(tmp_path / 'out')
+    assert main([mine, '--reference', ref, '--at', '1', '10', '--apart', '4', '--out', out]) == 0
+    with open(os.path.join(out, 'settlement-paired.json')) as fh:
+        assert [c['cycle'] for c in json.load(fh)[mine]['perCycle']] == [1, 10]
+    assert len(open(os.path.join(out, 'settlement-paired.csv')).read().splitlines()) == 1 + 2 * 4
+    assert 'cycle 10 (3 seeds): difference +%.4f mm' % (2e-2 * (1 + math.log(10))) in capsys.readouterr().out

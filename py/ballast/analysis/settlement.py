@@ -85,6 +85,42 @@ def summary(frame):
     return out
 
 
+def paired(frame, study, reference, at):
+    """The runs of `study` against those of `reference` with the same seed (the same bed: the pair differs by what
+    the studies change, for example the frequency), at the cycles `at` both reached: a DataFrame per seed and cycle
+    with both settlements [m], their difference (study - reference) and ratio; and per cycle over the seeds the
+    mean difference with its 95 % interval (Student's t, two seeds or more) and the mean ratio, the seeds read
+    apart in either left out (they stay in the rows, flagged). ValueError if a
+    study holds two realizations of one seed (the pair would be ambiguous)."""
+    from scipy import stats
+    runs = {}
+    for name in (study, reference):
+        g = frame[frame.study == name]
+        twice = g.groupby('seed').runId.nunique()
+        if (twice > 1).any():
+            seed = twice[twice > 1].index[0]
+            raise ValueError('paired: %s holds %d runs of seed %s (%s): which to pair is ambiguous' % (
+                name, twice[seed], seed, ', '.join(sorted(g[g.seed == seed].runId.unique()))))
+        runs[name] = g.set_index(['seed', 'cycle'])
+    mine, ref = runs[study], runs[reference]
+    both = mine.index.intersection(ref.index)
+    both = both[both.get_level_values('cycle').isin(list(at))]
+    rows = pd.DataFrame({'seed': both.get_level_values('seed'), 'cycle': both.get_level_values('cycle'),
+                         'runId': mine.loc[both, 'runId'].to_numpy(), 'reference': ref.loc[both, 'runId'].to_numpy(),
+                         'settlement': mine.loc[both, 'settlement'].to_numpy(),
+                         'settlementReference': ref.loc[both, 'settlement'].to_numpy(),
+                         'apart': mine.loc[both, 'apart'].to_numpy() | ref.loc[both, 'apart'].to_numpy()})
+    rows['difference'] = rows.settlement - rows.settlementReference
+    rows['ratio'] = rows.settlement / rows.settlementReference
+    per = []
+    for N, g in rows[~rows.apart].groupby('cycle'):
+        n, d = len(g), g.difference.to_numpy()
+        half = stats.t.ppf(0.975, n - 1) * d.std(ddof=1) / math.sqrt(n) if n >= 2 else math.nan
+        per.append({'cycle': int(N), 'seeds': n, 'meanDifference': float(d.mean()), 'interval95': float(half),
+                    'meanRatio': float(g.ratio.mean())})
+    return rows.sort_values(['cycle', 'seed'], ignore_index=True), per
+
+
 def figure(frame, fits, path):
     """Settlement against log N: every run thin, the mean of each study thick, its logarithmic law dashed."""
     import matplotlib
