@@ -68,6 +68,22 @@ def test_keeping_the_last_jumps_states_only_changes_nothing_else(jumped, tmp_pat
                                                              for f in last.saved)
 
 
+def test_a_slice_keeping_the_last_states_leaves_those_of_the_run_it_continues(jumped, tmp_path, beds):
+    test, s = jumped
+    before = sorted(f for f in os.listdir(test.out) if f.startswith('state-jump'))
+    cycles = 2 * s['cycles']
+    last = BoxTest(results=str(tmp_path), runId='slice', bedDir=beds, jumpStates='last',
+                   continueFrom=os.path.join(test.out, 'state-end.yade.gz'), **dict(WEAK, cycles=cycles), **JUMP)
+    out = os.path.join(str(tmp_path), last.run()['runId'])
+    ref, got = (pd.read_csv(os.path.join(d, 'jumps.csv')) for d in (test.out, out))
+    assert len(got) >= len(ref) + 2, 'the slice needs two jumps of its own'
+    assert sorted(f for f in os.listdir(test.out) if f.startswith('state-jump')) == before   # untouched
+    names = ['stateBefore', 'stateAfter']
+    pd.testing.assert_frame_equal(got[names].iloc[:len(ref)], ref[names])   # the earlier run's names kept
+    assert got[names].iloc[len(ref):-1].isna().all().all()
+    assert sorted(f for f in os.listdir(out) if f.startswith('state-jump')) == sorted(got[names].iloc[-1])
+
+
 def test_a_jump_moves_every_grains_damage_within_its_bound_and_nothing_else(jumped):
     from yade import O
     from ballast.experiments import chain, grains

@@ -271,13 +271,15 @@ class Experiment:
                  'extrapolated' % (k, e['cycle'], e['to'], e['limit'], e['maxRate'], 1e3 * e['settlementJumped']))
 
     def forgetJumpStates(self, jump):
-        """Remove the states saved around an earlier jump (jumpStates 'last'); its log row keeps no names."""
+        """Remove the states this run saved around an earlier jump (jumpStates 'last') and their names from its log
+        row; those of the run it continues (another folder) stay."""
         for key in ('stateBefore', 'stateAfter'):
             path = os.path.join(self.out, jump[key])
-            if jump[key] and os.path.exists(path):   # a run continued elsewhere wrote it in its own folder
-                os.remove(path)
-            self.saved = [f for f in self.saved if f != path]
-            jump[key] = ''
+            if jump[key] and path in self.saved:
+                if os.path.exists(path):
+                    os.remove(path)
+                self.saved.remove(path)
+                jump[key] = ''
 
     def jumped(self, cycles):
         """After a jump of `cycles` (subclasses whose own records count cycles move them on)."""
