@@ -6,8 +6,8 @@ docs/box.md, "The study"):
         [--reference docs/studies/box --at 1 5 10 25 50]
 
 writes settlement.csv (every run's curve), settlement.json (per study: the mean curve's and every run's
-logarithmic and power laws with R^2) and settlement.png; with --reference, each other study's runs against the
-reference's of the same seed at the cycles --at: settlement-paired.csv (per seed and cycle) and
+logarithmic and power laws with R^2) and settlement.png; with --reference, all three over the cycles the other
+studies cover, and each other study's runs against the reference's of the same seed at the cycles --at: settlement-paired.csv (per seed and cycle) and
 settlement-paired.json (per cycle: the mean difference with its 95 % interval, the mean ratio)."""
 import argparse
 import json
@@ -35,6 +35,8 @@ def main(argv=None):
         a.studies.append(a.reference)
     try:
         frame = settlement.curves(a.studies, apart=a.apart)
+        if a.reference:   # compared over the cycles the other studies cover: the reference's curves cut there
+            frame = frame[frame.cycle <= frame[frame.study != a.reference].cycle.max()]
         fits = settlement.summary(frame)
         pairs = {study: settlement.paired(frame, study, a.reference, a.at) for study in a.studies
                  if a.reference and study != a.reference}

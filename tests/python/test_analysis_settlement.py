@@ -107,5 +107,7 @@ def test_two_studies_are_compared_seed_by_seed_at_the_cycles_asked(tmp_path, cap
     assert main([mine, '--reference', ref, '--at', '1', '10', '--apart', '4', '--out', out]) == 0
     with open(os.path.join(out, 'settlement-paired.json')) as fh:
         assert [c['cycle'] for c in json.load(fh)[mine]['perCycle']] == [1, 10]
+    with open(os.path.join(out, 'settlement.json')) as fh:   # the reference's 30 cycles cut to the study's 25
+        assert json.load(fh)[ref]['cycles'] == 25
     assert len(open(os.path.join(out, 'settlement-paired.csv')).read().splitlines()) == 1 + 2 * 4
     assert 'cycle 10 (3 seeds): difference +%.4f mm' % (2e-2 * (1 + math.log(10))) in capsys.readouterr().out
