@@ -7,8 +7,9 @@ docs/box.md, "The study"):
 
 writes settlement.csv (every run's curve), settlement.json (per study: the mean curve's and every run's
 logarithmic and power laws with R^2) and settlement.png; with --reference, all three over the cycles the other
-studies cover, and each other study's runs against the reference's of the same seed at the cycles --at: settlement-paired.csv (per seed and cycle) and
-settlement-paired.json (per cycle: the mean difference with its 95 % interval, the mean ratio)."""
+studies cover, and each other study's runs against the reference's of the same seed at the cycles --at:
+settlement-paired.csv (per seed and cycle) and settlement-paired.json (per cycle: the mean difference with its
+95 % interval, the mean ratio)."""
 import argparse
 import json
 import os

@@ -4,12 +4,25 @@ detected (:func:`effectTest`), and the same question within realizations, a seed
 at every value (:func:`blockedTest`, :func:`withinSeeds`: Friedman's test, Page's trend test). scipy,
 no YADE; the runs come from ballast.study.data.StudyData.
 """
+import math
+
 import numpy as np
 
 
 def unitOf(data, quantity):
     """The unit of a result, as the experiment declares it ('-' if it does not)."""
     return dict(data.declaration.results).get(quantity, '-')
+
+
+def meanInterval(values, level=0.95):
+    """The mean of `values` and the half-width of its two-sided Student t interval at `level` (NaN below two
+    values): for paired differences, the interval of their mean."""
+    from scipy import stats
+    v = np.asarray(values, float)
+    n = len(v)
+    if n < 2:
+        return float(np.mean(v)) if n else math.nan, math.nan
+    return float(np.mean(v)), float(stats.t.ppf(0.5 + level / 2, n - 1) * np.std(v, ddof=1) / math.sqrt(n))
 
 
 def detectable(alpha, power, dof):

@@ -5,13 +5,13 @@ paper's rows of the same study, or an older study's records): the response (delt
 at the applied peak of eq. 8, what Fig. 5 reads), the crushes, the share of realizations that
 avalanche, a paired and a two-sample test, the paired mean difference with its 95 % interval, and the
 CPU ratio per seed. Needs no YADE."""
-import math
 
 import numpy as np
 import pandas as pd
 from scipy import stats
 
 from ..study.data import StudyRuns
+from .effects import meanInterval
 
 AVALANCHE = 0.005   # [m] delta at the applied peak above which a realization avalanched (docs/studies.md: quiet
 #                     realizations stay below 1 mm, avalanches settle 9-80 mm)
@@ -59,7 +59,7 @@ def compare(option, reference, response='deltaAtAppliedPeak'):
     d = x - y
     n = len(seeds)
     sd = float(np.std(d, ddof=1))
-    half = float(stats.t.ppf(0.975, n - 1) * sd / math.sqrt(n))
+    half = meanInterval(d)[1]
     same = bool(np.all(d == 0))
     out = {'n': n, 'seeds': [int(s) for s in seeds], 'response': response,
            'option': {'mean': float(np.mean(x)), 'crushes': float(a.loc[seeds, 'nCrushed'].mean()),

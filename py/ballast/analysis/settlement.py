@@ -11,6 +11,7 @@ import pandas as pd
 
 from ..settlementlaws import fitLaws, settlementJumped
 from ..study.data import StudyRuns
+from .effects import meanInterval
 
 
 def continued(runs):
@@ -92,7 +93,6 @@ def paired(frame, study, reference, at):
     mean difference with its 95 % interval (Student's t, two seeds or more) and the mean ratio, the seeds read
     apart in either left out (they stay in the rows, flagged). ValueError if a
     study holds two realizations of one seed (the pair would be ambiguous)."""
-    from scipy import stats
     runs = {}
     for name in (study, reference):
         g = frame[frame.study == name]
@@ -114,9 +114,8 @@ def paired(frame, study, reference, at):
     rows['ratio'] = rows.settlement / rows.settlementReference
     per = []
     for N, g in rows[~rows.apart].groupby('cycle'):
-        n, d = len(g), g.difference.to_numpy()
-        half = stats.t.ppf(0.975, n - 1) * d.std(ddof=1) / math.sqrt(n) if n >= 2 else math.nan
-        per.append({'cycle': int(N), 'seeds': n, 'meanDifference': float(d.mean()), 'interval95': float(half),
+        mean, half = meanInterval(g.difference)
+        per.append({'cycle': int(N), 'seeds': len(g), 'meanDifference': mean, 'interval95': half,
                     'meanRatio': float(g.ratio.mean())})
     return rows.sort_values(['cycle', 'seed'], ignore_index=True), per
 
