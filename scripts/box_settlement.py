@@ -3,13 +3,14 @@
 docs/box.md, "The study"):
 
     scripts/box_settlement.py docs/studies/box [docs/studies/box-f3 ...] --out docs/studies/box [--apart 2]
-        [--reference docs/studies/box --at 1 5 10 25 50]
+        [--tipping 0.02] [--reference docs/studies/box --at 1 5 10 25 50]
 
 writes settlement.csv (every run's curve), settlement.json (per study: the mean curve's and every run's
 logarithmic and power laws with R^2) and settlement.png; with --reference, all three over the cycles the other
 studies cover, and each other study's runs against the reference's of the same seed at the cycles --at:
 settlement-paired.csv (per seed and cycle) and settlement-paired.json (per cycle: the mean difference with its
-95 % interval, the mean ratio)."""
+95 % interval, the mean ratio). --tipping reads apart the realizations whose sleeper rose back by more than
+that many mm above its deepest settlement (it tips or rocks instead of settling), naming the cycle it did."""
 import argparse
 import json
 import os
@@ -21,12 +22,26 @@ from ballast.analysis import settlement
 from ballast.study.options import StudyError
 
 
+def rise(text):
+    """--tipping's value [mm]: a number above 0."""
+    try:
+        value = float(text)
+    except ValueError:
+        value = float('nan')
+    if not value > 0 or value == float('inf'):
+        raise argparse.ArgumentTypeError('%r mm; allowed: a rise above 0 mm, e.g. 0.02' % text)
+    return value
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(prog='scripts/box_settlement.py', description=__doc__.split('\n\n')[0])
     ap.add_argument('studies', nargs='+', help='studies or their records, with runs that wrote cycles.csv')
     ap.add_argument('--out', required=True, help='where settlement.csv, settlement.json and settlement.png go')
     ap.add_argument('--apart', type=int, nargs='+', default=[], metavar='SEED',
                     help='realizations read apart (drawn, fitted, left out of the mean), e.g. a sleeper that tips')
+    ap.add_argument('--tipping', type=rise, metavar='MM',
+                    help='read apart the realizations whose sleeper rises back more than MM [mm] above its deepest '
+                    'settlement (it tips or rocks), from a pair the cycles after it did (default: no detection)')
     ap.add_argument('--reference', metavar='STUDY', help='a study (read too if not listed) whose runs the others '
                     'are compared with, seed by seed (the same bed)')
     ap.add_argument('--at', type=int, nargs='+', default=[1, 10, 100], metavar='N',
@@ -35,9 +50,9 @@ def main(argv=None):
     if a.reference and a.reference not in a.studies:
         a.studies.append(a.reference)
     try:
-        frame = settlement.curves(a.studies, apart=a.apart)
+        frame = settlement.curves(a.studies, apart=a.apart, tipping=None if a.tipping is None else 1e-3 * a.tipping)
         if a.reference:   # compared over the cycles the other studies cover: the reference's curves cut there
-            frame = frame[frame.cycle <= frame[frame.study != a.reference].cycle.max()]
+            frame = settlement.upTo(frame, frame[frame.study != a.reference].cycle.max())
         fits = settlement.summary(frame)
         pairs = {study: settlement.paired(frame, study, a.reference, a.at) for study in a.studies
                  if a.reference and study != a.reference}
@@ -57,10 +72,13 @@ def main(argv=None):
         json.dump(fits, fh, indent=1)
     for study, (_, per) in pairs.items():
         for c in per:
-            print('%s against %s, cycle %d (%d seeds): difference %+.4f mm (95 %%: +-%.4f), ratio %.3f' % (
-                study, a.reference, c['cycle'], c['seeds'], 1e3 * c['meanDifference'], 1e3 * c['interval95'],
+            print('%s against %s, cycle %d (%d seeds): difference %+.4f mm (95 %%: %s), ratio %.3f' % (
+                study, a.reference, c['cycle'], c['seeds'], 1e3 * c['meanDifference'],
+                'none with one seed' if c['interval95'] is None else '+-%.4f' % (1e3 * c['interval95']),
                 c['meanRatio']))
     for study, f in fits.items():
+        for rid, n in f['tippedAt'].items():
+            print('%s: %s tips from cycle %d (read apart)' % (study, rid, n))
         law = (f['mean'] or {}).get('log')
         print('%s: %d runs to cycle %d%s, settlement %.3f mm after cycle 1, %.3f mm after %d%s' % (
             study, f['runs'], f['cycles'], ' (read apart: %s)' % ', '.join(f['apart']) if f['apart'] else '',

@@ -111,3 +111,47 @@ def test_two_studies_are_compared_seed_by_seed_at_the_cycles_asked(tmp_path, cap
         assert json.load(fh)[ref]['cycles'] == 25
     assert len(open(os.path.join(out, 'settlement-paired.csv')).read().splitlines()) == 1 + 2 * 4
     assert 'cycle 10 (3 seeds): difference +%.4f mm' % (2e-2 * (1 + math.log(10))) in capsys.readouterr().out
+
+
+def test_a_sleeper_that_rises_back_is_found_and_read_apart_from_its_onset(tmp_path, capsys):
+    # seeds 1 and 3 settle as 1e-4 (k + ln N); seed 2 settles so to cycle 5 and then rises back 1e-5 m a cycle:
+    # 2e-5 m above its deepest at cycle 7, 3e-5 at 8. With a rise of 2.5e-5 m it tips from cycle 8; 1e-3 m: never
+    N = np.arange(1, 11)
+    two = list(1e-4 * (2 + np.log(N[:5]))) + [1e-4 * (2 + math.log(5)) - 1e-5 * k for k in range(1, 6)]
+    assert settlement.tippingOnset(N, two, 2.5e-5) == 8 and settlement.tippingOnset(N, two, 1e-3) is None
+    assert settlement.tippingOnset(N, list(1e-4 * np.log(N)), 1e-12) is None   # a settling sleeper never tips
+    ref = study(str(tmp_path / 'ref'), {'s%d' % k: (k, list(1e-4 * (k + np.log(N)))) for k in (1, 3)} | {'s2': (2, two)})
+    frame = settlement.curves([ref], tipping=2.5e-5)
+    f = settlement.summary(frame)[ref]
+    assert f['tippedAt'] == {'s2': 8} and f['apart'] == ['s2'] and f['runs'] == 2
+    assert f['mean']['log']['a'] == pytest.approx(2e-4, rel=1e-9)   # the mean of seeds 1 and 3
+    assert settlement.summary(settlement.curves([ref], tipping=1e-3))[ref]['runs'] == 3
+    # paired with itself scaled 1.1: seed 2's pair counts until cycle 7, not from 8 on
+    mine = study(str(tmp_path / 'mine'), {'m%d' % k: (k, list(1.1e-4 * (k + np.log(N)))) for k in (1, 2, 3)})
+    rows, per = settlement.paired(settlement.curves([mine, ref], tipping=2.5e-5), mine, ref, [5, 7, 8, 10])
+    assert list(rows[rows.seed == 2].tipped) == [False, False, True, True]
+    assert [c['seeds'] for c in per] == [3, 3, 2, 2]
+    # cut to the first 7 cycles, seed 2 has not tipped there: in the mean again
+    cut = settlement.upTo(frame, 7)
+    assert cut.cycle.max() == 7 and settlement.summary(cut)[ref]['tippedAt'] == {}
+    assert settlement.summary(cut)[ref]['runs'] == 3
+    # one seed left in a pair: no interval (JSON null), said so on the command line
+    one = study(str(tmp_path / 'one'), {'o2': (2, list(1.1e-4 * (2 + np.log(N))))})
+    _, per = settlement.paired(settlement.curves([one, ref]), one, ref, [3])
+    assert per[0]['seeds'] == 1 and per[0]['interval95'] is None
+    for bad in (0, -1e-5, math.nan, math.inf, '0.02'):
+        with pytest.raises(ValueError, match='tipping = .* allowed: a rise above 0 m'):
+            settlement.curves([ref], tipping=bad)
+    import runpy
+    script = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), 'scripts',
+                          'box_settlement.py')
+    main = runpy.run_path(script)['main']
+    assert main([ref, '--tipping', '0.025', '--out', str(tmp_path / 'out')]) == 0
+    assert 's2 tips from cycle 8 (read apart)' in capsys.readouterr().out
+    assert main([one, '--reference', ref, '--at', '3', '--out', str(tmp_path / 'out')]) == 0
+    assert 'cycle 3 (1 seeds): difference +%.4f mm (95 %%: none with one seed)' % (
+        1e-2 * (2 + math.log(3))) in capsys.readouterr().out
+    for bad in ('0', '-1', 'nan', 'inf', 'x'):
+        with pytest.raises(SystemExit):
+            main([ref, '--tipping', bad, '--out', str(tmp_path / 'out')])
+        assert "--tipping: '%s' mm; allowed: a rise above 0 mm" % bad in capsys.readouterr().err

@@ -21,11 +21,23 @@ def continued(runs):
             for r in runs if r.params.get('continueFrom')}
 
 
-def curves(paths, apart=()):
+def tippingOnset(cycle, settlement, rise):
+    """The first cycle whose settlement [m] at the seating load stands more than `rise` [m] above the deepest one
+    before it, None if none: under a load that only presses, the sleeper's centre rises back only when the
+    sleeper pivots on its bed (it tips or rocks) instead of settling."""
+    s = np.asarray(settlement, float)
+    up = np.maximum.accumulate(s) - s > rise
+    return int(np.asarray(cycle)[up.argmax()]) if up.any() else None
+
+
+def curves(paths, apart=(), tipping=None):
     """The settlement curves of the finished runs of the studies (or records) at `paths`, a realization run in
     slices once, as its last slice: a DataFrame with study, runId, seed, cycle, settlement [m], resilient [m]
-    (NaN where a run has none) and apart (the seed is one of `apart`: a realization read apart, left out of the
-    mean, for example a sleeper that tips instead of settling)."""
+    (NaN where a run has none), apart (the seed is one of `apart`: a realization read apart by choice) and
+    tippedAt (with `tipping`, a rise [m]: the cycle from which the sleeper rose back more than that,
+    tippingOnset; NaN where it did not). A realization apart or tipped is left out of the mean (readApart)."""
+    if tipping is not None and not (isinstance(tipping, (int, float)) and math.isfinite(tipping) and tipping > 0):
+        raise ValueError('curves: tipping = %r m; allowed: a rise above 0 m, or None (no detection)' % (tipping,))
     rows = []
     for path in paths:
         study = StudyRuns(path)
@@ -37,13 +49,30 @@ def curves(paths, apart=()):
             if c is None or 'settlement' not in c:
                 continue
             seed = run.params.get('seed')
+            s = total(c)
+            onset = tippingOnset(c['cycle'], s, tipping) if tipping is not None else None
             rows.append(pd.DataFrame({'study': path, 'runId': run.runId, 'seed': seed,
-                                      'cycle': c['cycle'].astype(int), 'settlement': total(c),
+                                      'cycle': c['cycle'].astype(int), 'settlement': s,
                                       'resilient': c['resilient'] if 'resilient' in c else math.nan,
-                                      'apart': seed in apart}))
+                                      'apart': seed in apart,
+                                      'tippedAt': math.nan if onset is None else float(onset)}))
     if not rows:
         raise ValueError('curves: no run with a cycles.csv (cycle, settlement) in %s' % ', '.join(paths))
     return pd.concat(rows, ignore_index=True)
+
+
+def upTo(frame, last):
+    """A curves() frame cut to the cycles up to `last`, a sleeper tipping only after them standing again."""
+    cut = frame[frame.cycle <= last].copy()
+    cut.loc[cut.tippedAt > last, 'tippedAt'] = math.nan
+    return cut
+
+
+def readApart(frame):
+    """Per row of a curves() frame whether its realization is left out of the mean: read apart by choice, or its
+    sleeper tipped at some cycle (the mean is over one set of realizations at every cycle)."""
+    out = frame.apart if 'apart' in frame else pd.Series(False, index=frame.index)
+    return out | frame.tippedAt.notna() if 'tippedAt' in frame else out
 
 
 def changedRows(cycles):
@@ -73,13 +102,15 @@ def summary(frame):
     apart left out), the laws fitted to the mean and to each run (those apart too)."""
     out = {}
     for study, every in frame.groupby('study', sort=False):
-        g = every[~every.apart] if 'apart' in every else every
+        g = every[~readApart(every)]
         if g.empty:
             raise ValueError('summary: every run of %s is read apart; nothing left to average' % study)
         last = int(g.groupby('runId').cycle.max().min())
         common = g[g.cycle <= last]
         mean = common.groupby('cycle').settlement.agg(['mean', 'std', 'count']).reset_index()
+        tipped = every.dropna(subset=['tippedAt']).groupby('runId').tippedAt.first() if 'tippedAt' in every else {}
         out[study] = {'runs': int(g.runId.nunique()), 'apart': sorted(set(every.runId) - set(g.runId)), 'cycles': last,
+                      'tippedAt': {rid: int(n) for rid, n in dict(tipped).items()},
                       'settlementFirst': float(mean['mean'].iloc[0]), 'settlementLast': float(mean['mean'].iloc[-1]),
                       'mean': fitLaws(mean.cycle, mean['mean']) if last >= 3 else None,
                       'perRun': {rid: fitLaws(r.cycle, r.settlement) for rid, r in every.groupby('runId') if len(r) >= 3}}
@@ -90,9 +121,10 @@ def paired(frame, study, reference, at):
     """The runs of `study` against those of `reference` with the same seed (the same bed: the pair differs by what
     the studies change, for example the frequency), at the cycles `at` both reached: a DataFrame per seed and cycle
     with both settlements [m], their difference (study - reference) and ratio; and per cycle over the seeds the
-    mean difference with its 95 % interval (Student's t, two seeds or more) and the mean ratio, the seeds read
-    apart in either left out (they stay in the rows, flagged). ValueError if a
-    study holds two realizations of one seed (the pair would be ambiguous)."""
+    mean difference with its 95 % interval (Student's t, two seeds or more) and the mean ratio, the pairs where
+    either is read apart or has tipped by that cycle left out (they stay in the rows, flagged apart or tipped: a
+    pair compares one bed at one cycle, valid until a sleeper tips). ValueError if a study holds two
+    realizations of one seed (the pair would be ambiguous)."""
     runs = {}
     for name in (study, reference):
         g = frame[frame.study == name]
@@ -110,12 +142,15 @@ def paired(frame, study, reference, at):
                          'settlement': mine.loc[both, 'settlement'].to_numpy(),
                          'settlementReference': ref.loc[both, 'settlement'].to_numpy(),
                          'apart': mine.loc[both, 'apart'].to_numpy() | ref.loc[both, 'apart'].to_numpy()})
+    cycle = rows.cycle.to_numpy()
+    rows['tipped'] = (mine.loc[both, 'tippedAt'].to_numpy() <= cycle) | (ref.loc[both, 'tippedAt'].to_numpy() <= cycle)
     rows['difference'] = rows.settlement - rows.settlementReference
     rows['ratio'] = rows.settlement / rows.settlementReference
     per = []
-    for N, g in rows[~rows.apart].groupby('cycle'):
+    for N, g in rows[~(rows.apart | rows.tipped)].groupby('cycle'):
         mean, half = meanInterval(g.difference)
-        per.append({'cycle': int(N), 'seeds': len(g), 'meanDifference': mean, 'interval95': half,
+        per.append({'cycle': int(N), 'seeds': len(g), 'meanDifference': mean,
+                    'interval95': half if math.isfinite(half) else None,   # one seed: none (JSON null)
                     'meanRatio': float(g.ratio.mean())})
     return rows.sort_values(['cycle', 'seed'], ignore_index=True), per
 
@@ -129,13 +164,14 @@ def figure(frame, fits, path):
     fig, ax = plt.subplots(figsize=(6.6, 4.4))
     for k, (study, g) in enumerate(frame.groupby('study', sort=False)):
         colour = 'C%d' % k
-        for rid, r in g.groupby('runId'):
-            away = bool(r.apart.iloc[0]) if 'apart' in r else False
-            ax.semilogx(r.cycle, 1e3 * r.settlement, ':' if away else '-', color='0.4' if away else colour,
-                        lw=0.9 if away else 0.6, alpha=0.8 if away else 0.5,
-                        label='%s: read apart' % rid if away else None)
         f = fits[study]
-        inMean = g[~g.apart] if 'apart' in g else g
+        for rid, r in g.groupby('runId'):
+            away = rid in f['apart']
+            label = ('%s: tips from cycle %d' % (rid, f['tippedAt'][rid]) if rid in f.get('tippedAt', {}) else
+                     '%s: read apart' % rid if away else None)
+            ax.semilogx(r.cycle, 1e3 * r.settlement, ':' if away else '-', color='0.4' if away else colour,
+                        lw=0.9 if away else 0.6, alpha=0.8 if away else 0.5, label=label)
+        inMean = g[~readApart(g)]
         mean = inMean[inMean.cycle <= f['cycles']].groupby('cycle').settlement.mean()
         ax.semilogx(mean.index, 1e3 * mean.values, '-', color=colour, lw=2.2,
                     label='%s: mean of %d runs' % (study.rstrip('/').split('/')[-1], f['runs']))
