@@ -4,13 +4,16 @@ docs/box.md, "The study"):
 
     scripts/box_settlement.py docs/studies/box [docs/studies/box-f3 ...] --out docs/studies/box [--apart 2]
         [--tipping 0.02] [--reference docs/studies/box --at 1 5 10 25 50]
+    scripts/box_settlement.py docs/studies/box-sg --by fatigue keep --reference 'docs/studies/box-sg[fatigue=1
+        keep=none]' --at 1 10 100 --out docs/studies/box-sg
 
 writes settlement.csv (every run's curve), settlement.json (per study: the mean curve's and every run's
 logarithmic and power laws with R^2) and settlement.png; with --reference, all three over the cycles the other
 studies cover, and each other study's runs against the reference's of the same seed at the cycles --at:
 settlement-paired.csv (per seed and cycle) and settlement-paired.json (per cycle: the mean difference with its
 95 % interval, the mean ratio). --tipping reads apart the realizations whose sleeper rose back by more than
-that many mm above its deepest settlement (it tips or rocks instead of settling), naming the cycle it did."""
+that many mm above its deepest settlement (it tips or rocks instead of settling), naming the cycle it did; --by
+splits a study's runs into its variants (rows differing in those parameters), each read as a study."""
 import argparse
 import json
 import os
@@ -42,19 +45,27 @@ def main(argv=None):
     ap.add_argument('--tipping', type=rise, metavar='MM',
                     help='read apart the realizations whose sleeper rises back more than MM [mm] above its deepest '
                     'settlement (it tips or rocks), from a pair the cycles after it did (default: no detection)')
-    ap.add_argument('--reference', metavar='STUDY', help='a study (read too if not listed) whose runs the others '
-                    'are compared with, seed by seed (the same bed)')
+    ap.add_argument('--by', nargs='+', default=[], metavar='PARAM',
+                    help="the parameters whose values split a study's runs into variants, each its own study named "
+                    "'STUDY[PARAM=value ...]' (e.g. --by fatigue keep)")
+    ap.add_argument('--reference', metavar='STUDY', help='a study (read too if not listed), or with --by a variant '
+                    "'STUDY[PARAM=value ...]', whose runs the others are compared with, seed by seed (the same bed)")
     ap.add_argument('--at', type=int, nargs='+', default=[1, 10, 100], metavar='N',
                     help='the cycles of the paired comparison (default: 1 10 100)')
     a = ap.parse_args(argv)
-    if a.reference and a.reference not in a.studies:
-        a.studies.append(a.reference)
+    referenceStudy = a.reference.split('[')[0] if a.by and a.reference else a.reference
+    if referenceStudy and referenceStudy not in a.studies:
+        a.studies.append(referenceStudy)
     try:
-        frame = settlement.curves(a.studies, apart=a.apart, tipping=None if a.tipping is None else 1e-3 * a.tipping)
+        frame = settlement.curves(a.studies, apart=a.apart, tipping=None if a.tipping is None else 1e-3 * a.tipping,
+                                  by=a.by)
+        names = list(frame.study.unique())
+        if a.reference and a.reference not in names:
+            raise ValueError('--reference %s: no such study or variant; there are %s' % (a.reference, ', '.join(names)))
         if a.reference:   # compared over the cycles the other studies cover: the reference's curves cut there
             frame = settlement.upTo(frame, frame[frame.study != a.reference].cycle.max())
         fits = settlement.summary(frame)
-        pairs = {study: settlement.paired(frame, study, a.reference, a.at) for study in a.studies
+        pairs = {study: settlement.paired(frame, study, a.reference, a.at) for study in names
                  if a.reference and study != a.reference}
     except (StudyError, ValueError) as e:
         print('box_settlement.py: %s' % e, file=sys.stderr)

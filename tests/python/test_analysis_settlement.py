@@ -11,13 +11,13 @@ from ballast.analysis import settlement
 
 
 def study(root, curves, continueFrom=None):
-    """A records folder with one run per curve {runId: (seed, settlements)}; continueFrom {runId: the runId whose
-    end state it continued from}."""
+    """A records folder with one run per curve {runId: (seed, settlements[, more parameters])}; continueFrom
+    {runId: the runId whose end state it continued from}."""
     rows = []
-    for k, (rid, (seed, s)) in enumerate(curves.items()):
+    for k, (rid, (seed, s, *more)) in enumerate(curves.items()):
         d = os.path.join(root, 'runs', rid)
         os.makedirs(d)
-        params = {'seed': seed, 'continueFrom': ''}
+        params = dict({'seed': seed, 'continueFrom': ''}, **(more[0] if more else {}))
         if continueFrom and rid in continueFrom:   # as a slice's row names it: a path through the records
             params['continueFrom'] = '/elsewhere/docs/studies/box/runs/%s/state-end.yade.gz' % continueFrom[rid]
         with open(os.path.join(d, 'summary.json'), 'w') as fh:
@@ -155,3 +155,37 @@ def test_a_sleeper_that_rises_back_is_found_and_read_apart_from_its_onset(tmp_pa
         with pytest.raises(SystemExit):
             main([ref, '--tipping', bad, '--out', str(tmp_path / 'out')])
         assert "--tipping: '%s' mm; allowed: a rise above 0 mm" % bad in capsys.readouterr().err
+
+
+def test_the_variants_of_one_study_are_studies_of_their_own(tmp_path, capsys):
+    # one study, seeds 1-3 each with fatigue on (1e-4 k (1 + ln N)) and off (0.9 times that) and keep none: by
+    # fatigue (and keep) two variants, the mean of each, paired: ratio 0.9, difference -1e-5 k (1 + ln N)
+    N = np.arange(1, 21)
+    runs = {}
+    for k in (1, 2, 3):
+        runs['on%d' % k] = (k, list(1e-4 * k * (1 + np.log(N))), {'fatigue': True, 'keep': 'none'})
+        runs['off%d' % k] = (k, list(0.9e-4 * k * (1 + np.log(N))), {'fatigue': False, 'keep': 'none'})
+    root = study(str(tmp_path / 'sg'), runs)
+    on, off = root + '[fatigue=1 keep=none]', root + '[fatigue=0 keep=none]'
+    frame = settlement.curves([root], by=['fatigue', 'keep'])
+    assert set(frame.study) == {on, off}
+    f = settlement.summary(frame)
+    assert f[on]['runs'] == 3 and f[on]['mean']['log']['b'] == pytest.approx(2e-4, rel=1e-9)
+    assert f[off]['mean']['log']['b'] == pytest.approx(1.8e-4, rel=1e-9)
+    _, per = settlement.paired(frame, off, on, [10])
+    assert per[0]['meanRatio'] == pytest.approx(0.9, rel=1e-12)
+    assert per[0]['meanDifference'] == pytest.approx(-2e-5 * (1 + math.log(10)), rel=1e-9)
+    with pytest.raises(ValueError, match=r'by = fatigue ft0, but the runs of .* have no parameter ft0'):
+        settlement.curves([root], by=['fatigue', 'ft0'])
+    with pytest.raises(ValueError, match='holds 2 runs of seed 1'):   # without by the variants are ambiguous
+        settlement.paired(settlement.curves([root]), root, root, [10])
+    import runpy
+    script = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), 'scripts',
+                          'box_settlement.py')
+    main = runpy.run_path(script)['main']
+    out = str(tmp_path / 'out')
+    assert main([root, '--by', 'fatigue', 'keep', '--reference', on, '--at', '10', '--out', out]) == 0
+    with open(os.path.join(out, 'settlement-paired.json')) as fh:
+        assert json.load(fh)[off]['perCycle'][0]['meanRatio'] == pytest.approx(0.9, rel=1e-9)
+    assert main([root, '--by', 'fatigue', '--reference', root + '[fatigue=2]', '--out', out]) == 2
+    assert '--reference %s[fatigue=2]: no such study or variant; there are' % root in capsys.readouterr().err

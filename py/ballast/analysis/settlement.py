@@ -30,12 +30,26 @@ def tippingOnset(cycle, settlement, rise):
     return int(np.asarray(cycle)[up.argmax()]) if up.any() else None
 
 
-def curves(paths, apart=(), tipping=None):
+def variantLabel(path, params, by):
+    """The name of a study's group of runs that share the values of the parameters `by`: 'path[name=value ...]'
+    in the table's spelling (fatigue=1, keep=none, ft0=363000), or the path alone without `by`."""
+    def text(v):
+        return str(int(v)) if isinstance(v, bool) else '%g' % v if isinstance(v, float) else str(v)
+    missing = [k for k in by if k not in params]
+    if missing:
+        raise ValueError('curves: by = %s, but the runs of %s have no parameter %s' % (
+            ' '.join(by), path, ', '.join(missing)))
+    return '%s[%s]' % (path, ' '.join('%s=%s' % (k, text(params[k])) for k in by)) if by else path
+
+
+def curves(paths, apart=(), tipping=None, by=()):
     """The settlement curves of the finished runs of the studies (or records) at `paths`, a realization run in
     slices once, as its last slice: a DataFrame with study, runId, seed, cycle, settlement [m], resilient [m]
     (NaN where a run has none), apart (the seed is one of `apart`: a realization read apart by choice) and
     tippedAt (with `tipping`, a rise [m]: the cycle from which the sleeper rose back more than that,
-    tippingOnset; NaN where it did not). A realization apart or tipped is left out of the mean (readApart)."""
+    tippingOnset; NaN where it did not). A realization apart or tipped is left out of the mean (readApart).
+    With `by` (parameter names) the runs of a study that differ in those (its variants, fatigue on and off for
+    example) are studies of their own, named by variantLabel: each has its mean, and they pair seed by seed."""
     if tipping is not None and not (isinstance(tipping, (int, float)) and math.isfinite(tipping) and tipping > 0):
         raise ValueError('curves: tipping = %r m; allowed: a rise above 0 m, or None (no detection)' % (tipping,))
     rows = []
@@ -51,7 +65,7 @@ def curves(paths, apart=(), tipping=None):
             seed = run.params.get('seed')
             s = total(c)
             onset = tippingOnset(c['cycle'], s, tipping) if tipping is not None else None
-            rows.append(pd.DataFrame({'study': path, 'runId': run.runId, 'seed': seed,
+            rows.append(pd.DataFrame({'study': variantLabel(path, run.params, by), 'runId': run.runId, 'seed': seed,
                                       'cycle': c['cycle'].astype(int), 'settlement': s,
                                       'resilient': c['resilient'] if 'resilient' in c else math.nan,
                                       'apart': seed in apart,
