@@ -30,6 +30,13 @@ def study(root, curves, continueFrom=None):
     return root
 
 
+def boxSettlement():
+    """scripts/box_settlement.py's main()."""
+    import runpy
+    root = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+    return runpy.run_path(os.path.join(root, 'scripts', 'box_settlement.py'))['main']
+
+
 def test_the_mean_over_runs_and_its_law(tmp_path):
     N = np.arange(1, 11)
     a = list(1e-4 + 4e-5 * np.log(N))
@@ -99,10 +106,7 @@ def test_two_studies_are_compared_seed_by_seed_at_the_cycles_asked(tmp_path, cap
     with pytest.raises(ValueError, match=r'holds 2 runs of seed 1 \(a, b\)'):
         settlement.paired(settlement.curves([twice, ref]), twice, ref, [1])
     # the command line: the reference read though not listed, its files written
-    import runpy
-    script = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), 'scripts',
-                          'box_settlement.py')
-    main = runpy.run_path(script)['main']
+    main = boxSettlement()
     out = str(tmp_path / 'out')
     assert main([mine, '--reference', ref, '--at', '1', '10', '--apart', '4', '--out', out]) == 0
     with open(os.path.join(out, 'settlement-paired.json')) as fh:
@@ -142,10 +146,7 @@ def test_a_sleeper_that_rises_back_is_found_and_read_apart_from_its_onset(tmp_pa
     for bad in (0, -1e-5, math.nan, math.inf, '0.02'):
         with pytest.raises(ValueError, match='tipping = .* allowed: a rise above 0 m'):
             settlement.curves([ref], tipping=bad)
-    import runpy
-    script = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), 'scripts',
-                          'box_settlement.py')
-    main = runpy.run_path(script)['main']
+    main = boxSettlement()
     assert main([ref, '--tipping', '0.025', '--out', str(tmp_path / 'out')]) == 0
     assert 's2 tips from cycle 8 (read apart)' in capsys.readouterr().out
     assert main([one, '--reference', ref, '--at', '3', '--out', str(tmp_path / 'out')]) == 0
@@ -179,10 +180,7 @@ def test_the_variants_of_one_study_are_studies_of_their_own(tmp_path, capsys):
         settlement.curves([root], by=['fatigue', 'ft0'])
     with pytest.raises(ValueError, match='holds 2 runs of seed 1'):   # without by the variants are ambiguous
         settlement.paired(settlement.curves([root]), root, root, [10])
-    import runpy
-    script = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), 'scripts',
-                          'box_settlement.py')
-    main = runpy.run_path(script)['main']
+    main = boxSettlement()
     out = str(tmp_path / 'out')
     assert main([root, '--by', 'fatigue', 'keep', '--reference', on, '--at', '10', '--out', out]) == 0
     with open(os.path.join(out, 'settlement-paired.json')) as fh:

@@ -85,8 +85,7 @@ def upTo(frame, last):
 def readApart(frame):
     """Per row of a curves() frame whether its realization is left out of the mean: read apart by choice, or its
     sleeper tipped at some cycle (the mean is over one set of realizations at every cycle)."""
-    out = frame.apart if 'apart' in frame else pd.Series(False, index=frame.index)
-    return out | frame.tippedAt.notna() if 'tippedAt' in frame else out
+    return frame.apart | frame.tippedAt.notna()
 
 
 def changedRows(cycles):
@@ -122,7 +121,7 @@ def summary(frame):
         last = int(g.groupby('runId').cycle.max().min())
         common = g[g.cycle <= last]
         mean = common.groupby('cycle').settlement.agg(['mean', 'std', 'count']).reset_index()
-        tipped = every.dropna(subset=['tippedAt']).groupby('runId').tippedAt.first() if 'tippedAt' in every else {}
+        tipped = every.dropna(subset=['tippedAt']).groupby('runId').tippedAt.first()
         out[study] = {'runs': int(g.runId.nunique()), 'apart': sorted(set(every.runId) - set(g.runId)), 'cycles': last,
                       'tippedAt': {rid: int(n) for rid, n in dict(tipped).items()},
                       'settlementFirst': float(mean['mean'].iloc[0]), 'settlementLast': float(mean['mean'].iloc[-1]),
@@ -181,7 +180,7 @@ def figure(frame, fits, path):
         f = fits[study]
         for rid, r in g.groupby('runId'):
             away = rid in f['apart']
-            label = ('%s: tips from cycle %d' % (rid, f['tippedAt'][rid]) if rid in f.get('tippedAt', {}) else
+            label = ('%s: tips from cycle %d' % (rid, f['tippedAt'][rid]) if rid in f['tippedAt'] else
                      '%s: read apart' % rid if away else None)
             ax.semilogx(r.cycle, 1e3 * r.settlement, ':' if away else '-', color='0.4' if away else colour,
                         lw=0.9 if away else 0.6, alpha=0.8 if away else 0.5, label=label)
