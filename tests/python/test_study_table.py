@@ -96,8 +96,8 @@ def test_the_columns_are_checked_against_the_experiment_named():
     # an experiment with two parameters, its own check and no sample store: 'packingDir' is an ordinary column
     small = Declaration('small', {k: PARAMS[k] for k in ('seed', 'packingDir')}, lambda v, text=False: dict(v), 'x.py',
                         {'results': 'out', 'runId': 'name', 'sampleStore': None})
-    assert table('seed packingDir\n1 /tmp/p\n').check(small) == {2: {'seed': '1', 'packingDir': '/tmp/p'}}
-    assert 'set by the study' in refused('seed packingDir\n1 /tmp/p\n')  # the oedometer's study sets it
+    assert table("seed packingDir\n1 '/tmp/p'\n").check(small) == {2: {'seed': '1', 'packingDir': "'/tmp/p'"}}
+    assert 'set by the study' in refused("seed packingDir\n1 '/tmp/p'\n")  # the oedometer's study sets it
     with pytest.raises(StudyError, match='column.s. f are not parameters of the small; parameters: seed, packingDir'):
         table('seed f\n1 2\n').check(small)
     assert table('seed f\n1 2\n').check(oedometer)[2]['f'] == 2
@@ -203,3 +203,27 @@ def test_a_tables_relative_paths_start_from_its_own_folder(tmp_path, monkeypatch
     # absolute paths, empty ones and the paths the study sets itself are left as they are
     cells = {'continueFrom': "'/abs/x.yade.gz'", 'loadFile': "''", 'results': "'out'"}
     assert resolvePaths(cells, 'box', str(folder)) == cells
+
+
+def test_a_cell_the_runs_reader_cannot_evaluate_is_refused_before_any_run():
+    """Unquoted text passes the parameter's own parser but not the eval of YADE's readParamsFromTable, which every
+    run applies at its start: the study refuses it first, naming line, column and value."""
+    text = "seed pattern criterion\n1 planar4 'vonMises'\n2 'planar4' vonMises\n"
+    message = refused(text)
+    assert message.startswith('2 row(s) refused')
+    assert "t.table:2: column pattern, value planar4: YADE's table reader evaluates every cell" in message
+    assert 't.table:3: column criterion, value vonMises:' in message
+    assert table(text.replace(' planar4', " 'planar4'").replace(' vonMises', " 'vonMises'")).check()[3]['pattern'] == 'planar4'
+
+
+@pytest.mark.parametrize('path', sorted(os.path.join('studies', f) for f in os.listdir(os.path.join(
+    os.path.dirname(__file__), '..', '..', 'studies')) if f.endswith('.table')))
+def test_every_study_table_of_the_repository_passes_its_experiments_check(path):
+    """Each table in studies/ against the experiment its comments name (--experiment X, else the oedometer):
+    a table a session writes must run, not fail in its first seconds."""
+    full = os.path.join(os.path.dirname(__file__), '..', '..', path)
+    text = open(full).read()
+    named = {l.split('--experiment')[1].split()[0] for l in text.splitlines() if l.startswith('#') and '--experiment' in l}
+    assert len(named) <= 1, named
+    params = Table(full).check(named.pop() if named else 'oedometer')
+    assert params and all(p['seed'] >= 1 for p in params.values())

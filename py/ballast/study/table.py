@@ -144,6 +144,10 @@ class Table:
                 self.path, ', '.join(ours)))
         params, bad = {}, []
         for n, row in self.rows:
+            unread = [c for c, raw in self.cells(n).items() if not readable(raw)]
+            if unread:  # the run would fail on it at its start: readParamsFromTable evaluates every cell
+                bad += ['%s:%d: column %s, value %s: %s' % (self.path, n, c, row[c], UNREADABLE) for c in unread]
+                continue
             try:
                 params[n] = d.check(resolvePaths(self.cells(n), d, tableDir(self.path)), text=True)
             except ParamError as e:
@@ -155,6 +159,18 @@ class Table:
             raise StudyError('%d row(s) refused:\n  %s%s' % (
                 len(bad), '\n  '.join(bad[:10]), '\n  ...' if len(bad) > 10 else ''))
         return params
+
+
+UNREADABLE = "YADE's table reader evaluates every cell: numbers as they are, text quoted ('planar4')"
+
+
+def readable(raw):
+    """Whether YADE's readParamsFromTable can evaluate the cell (it evals it, with math's names)."""
+    try:
+        eval(raw, dict(math.__dict__))
+        return True
+    except Exception:
+        return False
 
 
 TABLE_DIR = 'BALLAST_TABLE_DIR'   # a run's environment: the folder of the table its row came from
@@ -199,11 +215,8 @@ def tableRow(path, line, declaration=None):
         if col not in d.params:
             raise ParamError(col, '%s: %s is not a parameter (a column of %s); parameters: %s' % (
                 d.owner, col, path, ', '.join(d.params)))
-        try:
-            eval(raw, dict(math.__dict__))
-        except Exception:
-            raise ParamError(col, "%s: cannot read %s = %r from %s:%d (numbers as they are, text quoted: 'planar4')" % (
-                d.owner, col, raw, path, line)) from None
+        if not readable(raw):
+            raise ParamError(col, '%s: cannot read %s = %r from %s:%d: %s' % (d.owner, col, raw, path, line, UNREADABLE))
     return resolvePaths(cells, d, tableDir(path))
 
 
