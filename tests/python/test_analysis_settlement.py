@@ -67,7 +67,16 @@ def test_a_realization_run_in_slices_counts_once_as_its_last_slice(tmp_path):
     assert f['runs'] == 2 and f['cycles'] == 8 and f['settlementLast'] == pytest.approx(1e-4 * (2 + 8), rel=1e-12)
 
 
-def test_a_realization_read_apart_is_fitted_and_drawn_but_left_out_of_the_mean(tmp_path):
+def drawn(monkeypatch, frame, fits, tmp_path):
+    """The panels settlement.figure draws (its figure caught where it would be saved)."""
+    import ballast.study.files
+    caught = []
+    monkeypatch.setattr(ballast.study.files, 'saveFigure', lambda fig, path: caught.append(fig))
+    settlement.figure(frame, fits, str(tmp_path / 'caught.png'))
+    return caught[0].axes
+
+
+def test_a_realization_read_apart_is_fitted_and_drawn_but_left_out_of_the_mean(tmp_path, monkeypatch):
     # seeds 1 and 3 settle as 1e-4 (1 + ln N) and 1e-4 (3 + ln N); seed 2's sleeper tips (its centre rises):
     # apart, the mean is 1e-4 (2 + ln N) exactly and seed 2 keeps its own laws
     N = np.arange(1, 9)
@@ -79,6 +88,12 @@ def test_a_realization_read_apart_is_fitted_and_drawn_but_left_out_of_the_mean(t
     assert f['mean']['log']['a'] == pytest.approx(2e-4, rel=1e-9) and f['mean']['log']['b'] == pytest.approx(1e-4, rel=1e-9)
     assert settlement.summary(settlement.curves([root]))[root]['runs'] == 3   # none apart: all three
     assert os.path.isfile(settlement.figure(frame, {root: f}, str(tmp_path / 'settlement.png')))
+    top, low = drawn(monkeypatch, frame, {root: f}, tmp_path)
+    # the top panel keeps the settling runs' scale: nothing of seed 2 (it sinks to -0.8 mm, is never level)
+    assert min(min(l.get_ydata()) for l in top.get_lines()) == pytest.approx(0.1, rel=1e-9)
+    assert [list(l.get_ydata()) for l in low.get_lines()] == [pytest.approx(list(-0.1 * N), rel=1e-12)]
+    (alone,) = drawn(monkeypatch, settlement.curves([root]), settlement.summary(settlement.curves([root])), tmp_path)
+    assert min(min(l.get_ydata()) for l in alone.get_lines()) == pytest.approx(-0.8, rel=1e-9)  # none apart: one panel
     with pytest.raises(ValueError, match='every run of .* is read apart'):
         settlement.summary(settlement.curves([root], apart=[1, 2, 3]))
 
@@ -117,7 +132,7 @@ def test_two_studies_are_compared_seed_by_seed_at_the_cycles_asked(tmp_path, cap
     assert 'cycle 10 (3 seeds): difference +%.4f mm' % (2e-2 * (1 + math.log(10))) in capsys.readouterr().out
 
 
-def test_a_sleeper_that_rises_back_is_found_and_read_apart_from_its_onset(tmp_path, capsys):
+def test_a_sleeper_that_rises_back_is_found_and_read_apart_from_its_onset(tmp_path, capsys, monkeypatch):
     # seeds 1 and 3 settle as 1e-4 (k + ln N); seed 2 settles so to cycle 5 and then rises back 1e-5 m a cycle:
     # 2e-5 m above its deepest at cycle 7, 3e-5 at 8. With a rise of 2.5e-5 m it tips from cycle 8; 1e-3 m: never
     N = np.arange(1, 11)
@@ -129,6 +144,9 @@ def test_a_sleeper_that_rises_back_is_found_and_read_apart_from_its_onset(tmp_pa
     f = settlement.summary(frame)[ref]
     assert f['tippedAt'] == {'s2': 8} and f['apart'] == ['s2'] and f['runs'] == 2
     assert f['mean']['log']['a'] == pytest.approx(2e-4, rel=1e-9)   # the mean of seeds 1 and 3
+    top, low = drawn(monkeypatch, frame, {ref: f}, tmp_path)   # seed 2 on the top panel only before it tips
+    assert [list(l.get_xdata()) for l in top.get_lines() if l.get_color() == '0.4'] == [list(range(1, 8))]
+    assert [len(l.get_xdata()) for l in low.get_lines()] == [10]
     assert settlement.summary(settlement.curves([ref], tipping=1e-3))[ref]['runs'] == 3
     # paired with itself scaled 1.1: seed 2's pair counts until cycle 7, not from 8 on
     mine = study(str(tmp_path / 'mine'), {'m%d' % k: (k, list(1.1e-4 * (k + np.log(N)))) for k in (1, 2, 3)})

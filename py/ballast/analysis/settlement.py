@@ -168,22 +168,36 @@ def paired(frame, study, reference, at):
     return rows.sort_values(['cycle', 'seed'], ignore_index=True), per
 
 
+APART_STYLES = (':', '-.', '--', (0, (1, 3)))  # line styles of the runs read apart, in the order of fits' 'apart'
+
+
 def figure(frame, fits, path):
-    """Settlement against log N: every run thin, the mean of each study thick, its logarithmic law dashed."""
+    """Settlement against log N: every run thin, the mean of each study thick, its logarithmic law dashed.
+    Runs read apart (a tipping sleeper swings by millimetres) get a panel of their own below, so that the
+    settling runs keep the scale of the top panel; there they are drawn only up to their tipping cycle."""
     import matplotlib
     matplotlib.use('Agg')
     import matplotlib.pyplot as plt
     from ..study.files import saveFigure
-    fig, ax = plt.subplots(figsize=(6.6, 4.4))
+    apart = readApart(frame)
+    split = bool(apart.any())
+    if split:
+        fig, (ax, low) = plt.subplots(2, 1, figsize=(6.6, 6.6), sharex=True, gridspec_kw={'height_ratios': (2, 1)})
+    else:
+        fig, ax = plt.subplots(figsize=(6.6, 4.4))
     for k, (study, g) in enumerate(frame.groupby('study', sort=False)):
         colour = 'C%d' % k
         f = fits[study]
         for rid, r in g.groupby('runId'):
-            away = rid in f['apart']
-            label = ('%s: tips from cycle %d' % (rid, f['tippedAt'][rid]) if rid in f['tippedAt'] else
-                     '%s: read apart' % rid if away else None)
-            ax.semilogx(r.cycle, 1e3 * r.settlement, ':' if away else '-', color='0.4' if away else colour,
-                        lw=0.9 if away else 0.6, alpha=0.8 if away else 0.5, label=label)
+            if rid in f['apart']:
+                style = APART_STYLES[f['apart'].index(rid) % len(APART_STYLES)]
+                label = '%s: tips from cycle %d' % (rid, f['tippedAt'][rid]) if rid in f['tippedAt'] else '%s: read apart' % rid
+                low.semilogx(r.cycle, 1e3 * r.settlement, style, color=colour, lw=1, label=label)
+                if rid in f['tippedAt']:  # before it tips it belongs on the top panel's scale
+                    level = r[r.cycle < f['tippedAt'][rid]]
+                    ax.semilogx(level.cycle, 1e3 * level.settlement, style, color='0.4', lw=0.9)
+            else:
+                ax.semilogx(r.cycle, 1e3 * r.settlement, '-', color=colour, lw=0.6, alpha=0.5)
         inMean = g[~readApart(g)]
         mean = inMean[inMean.cycle <= f['cycles']].groupby('cycle').settlement.mean()
         ax.semilogx(mean.index, 1e3 * mean.values, '-', color=colour, lw=2.2,
@@ -193,9 +207,15 @@ def figure(frame, fits, path):
             N = np.array(mean.index, float)
             ax.semilogx(N, 1e3 * (law['a'] + law['b'] * np.log(N)), '--', color=colour, lw=1,
                         label='a + b ln N: b = %.3g mm, R$^2$ = %.3f' % (1e3 * law['b'], law['r2']))
-    ax.set_xlabel('load cycles N')
     ax.set_ylabel('permanent settlement [mm]')
-    ax.grid(True, which='both', alpha=0.3)
-    ax.legend(fontsize=7)
+    axes = (ax, low) if split else (ax,)
+    if split:
+        ax.set_title('runs in the mean; grey: the tipping runs before they tip', fontsize=8)
+        low.set_ylabel('settlement [mm]')
+        low.set_title('runs read apart, whole history', fontsize=8)
+    axes[-1].set_xlabel('load cycles N')
+    for a in axes:
+        a.grid(True, which='both', alpha=0.3)
+        a.legend(fontsize=7)
     saveFigure(fig, path)
     return path
