@@ -303,3 +303,22 @@ def test_last_error_prefers_the_bad_parameter_line(tmp_path):
     log.write_text('Traceback (most recent call last):\n  File "x"\nValueError: no\n\n')
     assert runner.lastError(str(log)) == 'ValueError: no'
     assert runner.lastError(str(tmp_path / 'none.log')) == ''
+
+
+def test_a_running_runs_progress_is_read_from_the_tail_of_its_newest_log(tmp_path):
+    work = tmp_path / 'work'
+    assert runner.runProgress(str(work), 'r') == ''   # no work directory yet
+    old, new, other = (work / 'r.abc', work / 'r.xyz', work / 'r2.abc')
+    for d in (old, new, other):
+        d.mkdir(parents=True)
+    (work / 'r.lock').write_text('')
+    assert runner.runProgress(str(work), 'r') == ''   # started, no log yet
+    line = '[box %6.1fs] load     t=0.1 s  step %d  dt=7.69e-07 s  %5.1f%% of loading  ETA %s  cycle 3 of 10\n'
+    (old / 'run.log').write_text(line % (1, 10, 99.0, '0s'))
+    os.utime(old / 'run.log', (1, 1))   # an earlier attempt's log, older
+    (other / 'run.log').write_text(line % (1, 10, 50.0, '9m'))   # another run whose id starts alike
+    # a long log: 10 000 lines, the last progress line before a line that is none
+    (new / 'run.log').write_text(''.join(line % (k, k, 100 * k / 1e4, '%dm' % (10000 - k)) for k in range(10000)) + 'fabric\n')
+    assert runner.runProgress(str(work), 'r') == '100.0% of loading, ETA 1m'   # line 9 999 (%5.1f)
+    (new / 'run.log').write_text('[box 0.2s] prepare  t=0 s  step 0\n')   # no progress line in its tail
+    assert runner.runProgress(str(work), 'r') == ''

@@ -107,6 +107,26 @@ def lastError(logPath):
     return lines[-1][:300] if lines else ''
 
 
+PROGRESS = re.compile(r'(\d+(?:\.\d+)?)% of (\w+)\s+ETA (\S+)')  # a progress line of experiments/phases.py
+
+
+def runProgress(work, runId):
+    """How far the newest attempt of a run in the study's work directory has come, from the last
+    progress line of its run.log ('24.8% of loading, ETA 23m32s'); '' when there is none yet."""
+    try:
+        tries = [os.path.join(work, n) for n in os.listdir(work) if n.rsplit('.', 1)[0] == runId]
+        logs = [os.path.join(t, 'run.log') for t in tries if os.path.isfile(os.path.join(t, 'run.log'))]
+        if not logs:
+            return ''
+        with open(max(logs, key=os.path.getmtime), 'rb') as fh:
+            fh.seek(max(0, os.fstat(fh.fileno()).st_size - 4096))  # a log grows to megabytes: its tail only
+            tail = fh.read().decode('utf-8', 'replace')
+    except OSError:  # the attempt ended and its folder went while we looked
+        return ''
+    found = PROGRESS.findall(tail)
+    return '%s%% of %s, ETA %s' % found[-1] if found else ''
+
+
 def failedLog(path):
     """True if the log ends a failed attempt (yade-batch's trailer says FAILED)."""
     try:

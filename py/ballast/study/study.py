@@ -36,7 +36,7 @@ from ..params import ParamError
 from .files import codeSha1, readSummary, sha1, writeAtomic
 from .options import OPTIONS, StudyError, experimentDeclaration, optionValue
 from .records import hasRecord, keepRecord, recordPath, writeIndex
-from .runner import clearWork, failedLog, finalizeShipped, lastError
+from .runner import clearWork, failedLog, finalizeShipped, lastError, runProgress
 from .table import Table, resolvePaths, tableDir
 
 # yade-batch's !COLUMNS that are not environment variables of the run
@@ -355,7 +355,9 @@ class Progress:
                 run = sorted(self.running.items(), key=lambda kv: kv[1])
                 done = self.counts['ok'] + self.counts['failed']
             if self.executor.name == 'local':
-                what = ', '.join('%s %s' % (k, fmtTime(now - v)) for k, v in run[:6]) + (' ...' if len(run) > 6 else '')
+                work = os.path.join(self.study.out, 'work')
+                what = ', '.join('%s %s%s' % (k, fmtTime(now - v), ' (%s)' % p if (p := runProgress(work, k)) else '')
+                                 for k, v in run[:6]) + (' ...' if len(run) > 6 else '')
                 self.study.say('%d/%d done, running: %s' % (done, self.nTodo, what or '-'))
                 continue
             held = self.executor.processing()
