@@ -111,6 +111,11 @@ def test_abrasion_under_the_rolling_law_keeps_the_ledger(tmp_path):
     s = test.run()
     assert s['nAbraded'] > 0 and s['massLost'] > 0 and s['params']['rollingFriction'] == 0.3
     assert abs(s['massLedgerError']) <= 1e-12 * s['massInitial']
+    # nothing crushed: no depth of the crushes, written as JSON's null (Python's NaN is no JSON)
+    with open(os.path.join(test.out, 'summary.json')) as fh:
+        written = json.loads(fh.read(), parse_constant=lambda c: pytest.fail('summary.json holds %s' % c))
+    assert s['nCrushed'] == 0 and written['local'] == {'crushedShare': 0.0, 'underShare': None, 'depthMedian': None,
+                                                       'depth90': None}
 
 
 def test_every_crush_is_mapped_once(run):

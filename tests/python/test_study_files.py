@@ -1,6 +1,10 @@
 """Tests of ballast.study.files: atomic writes, and the sha1 that identifies the code of a run (the
-script and the installed ballast package)."""
+script and the installed ballast package); strict JSON."""
+import json
 import os
+
+import numpy as np
+import pytest
 
 import ballast
 from ballast.study import files
@@ -46,3 +50,11 @@ def test_read_files_gives_every_file_below_a_directory(tmp_path):
     (tmp_path / 'fd.csv').write_text('t,F\n')
     (tmp_path / 'vtk' / 'a.vtu').write_bytes(b'\0\1')
     assert files.readFiles(str(tmp_path)) == {'fd.csv': b't,F\n', os.path.join('vtk', 'a.vtu'): b'\0\1'}
+
+
+def test_strict_json_writes_what_is_not_a_finite_number_as_null():
+    value = {'a': float('nan'), 'b': [1.5, float('inf'), (np.float64('-inf'), 2)], 'c': {'d': True, 'e': 3, 'f': 'x'}}
+    text = json.dumps(files.strictJson(value))
+    assert json.loads(text, parse_constant=lambda c: pytest.fail(c)) == {
+        'a': None, 'b': [1.5, None, [None, 2]], 'c': {'d': True, 'e': 3, 'f': 'x'}}
+    assert 'NaN' in json.dumps(value)   # what Python's json writes without it

@@ -2,12 +2,23 @@
 sha1 (a table, the code of a run); the test of a finished run."""
 import hashlib
 import json
+import math
 import os
 import uuid
 
 
 def sha1(data):
     return hashlib.sha1(data if isinstance(data, bytes) else data.encode()).hexdigest()
+
+
+def strictJson(value):
+    """`value` with every float that is not finite (NaN, inf) as None: JSON has no NaN, and strict readers
+    (jq, JavaScript, json.loads with parse_constant) refuse the NaN Python's json writes."""
+    if isinstance(value, dict):
+        return {k: strictJson(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [strictJson(v) for v in value]
+    return None if isinstance(value, float) and not math.isfinite(value) else value
 
 
 def writeAtomic(path, data):

@@ -29,7 +29,7 @@ from yade import O
 
 from ... import grading as gr
 from ...engines import BallastAbrasionEngine, BallastCrushEngine
-from ...study.files import saveFigure, writeAtomic
+from ...study.files import saveFigure, strictJson, writeAtomic
 from .. import grains
 from ...settlementlaws import settlementJumped
 from ..oedometer.outputs import _array, _unstructured, writeContactsVtu, writePvd
@@ -161,7 +161,7 @@ def write(exp):
                                        for k, (a, b) in enumerate(z['bands'])])
     for name, df in files.items():
         writeAtomic(os.path.join(out, name), df.to_csv(index=False, float_format='%.9g'))
-    writeAtomic(os.path.join(out, 'summary.json'), json.dumps(s, indent=1) + '\n')
+    writeAtomic(os.path.join(out, 'summary.json'), json.dumps(strictJson(s), indent=1) + '\n')  # no crush: local measures null
     figures(exp, files)
     if exp.frames:
         writePvd(os.path.join(out, 'boxes.pvd'), exp.frames)

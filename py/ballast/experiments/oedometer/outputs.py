@@ -17,7 +17,7 @@ from yade import O, plot
 from yade.wrapper import Facet, Sphere
 
 from ... import _ballast, grading, harvest, runtime
-from ...study.files import saveFigure, writeAtomic
+from ...study.files import saveFigure, strictJson, writeAtomic
 from ...settlementlaws import settlementJumped
 
 FD_COLUMNS = ('t', 'F', 'delta', 'nCrushed', 'nAbraded', 'Fapplied')
@@ -320,7 +320,7 @@ class Outputs:
         self.writeGrading(exp, summary)
         if len(self.cycleRows) > 1:
             self.plotCycles(exp)
-        writeAtomic(os.path.join(out, 'summary.json'), json.dumps(summary, indent=1))  # last: the run's outputs are all there
+        writeAtomic(os.path.join(out, 'summary.json'), json.dumps(strictJson(summary), indent=1))  # last: the run's outputs are all there
 
     def plotCycles(self, exp):
         """cycles.png: permanent settlement and B_g against the number of cycles (log axis)."""

@@ -10,7 +10,7 @@ import time
 import numpy as np
 import pandas as pd
 
-from ...study.files import saveFigure, writeAtomic
+from ...study.files import saveFigure, strictJson, writeAtomic
 from . import strengths
 
 STRENGTH_COLUMNS = ['grain', 'diameter', 'sizeClass', 'crushed', 'force', 'forceBottom', 'displacement',
@@ -67,15 +67,6 @@ def summary(exp, s=None):
     return out
 
 
-def finite(v):
-    """summary.json is strict JSON: an infinite modulus (no scatter) or a NaN is written as null."""
-    if isinstance(v, dict):
-        return {k: finite(x) for k, x in v.items()}
-    if isinstance(v, (list, tuple)):
-        return [finite(x) for x in v]
-    return None if isinstance(v, float) and not math.isfinite(v) else v
-
-
 def write(exp, summary, s):
     """Every file written atomically (a killed test leaves whole files or none), summary.json last; s: the
     strengths table the summary was made from (table)."""
@@ -84,7 +75,7 @@ def write(exp, summary, s):
     writeAtomic(os.path.join(out, 'curves.csv'), pd.DataFrame(
         exp.tester.curves, columns=['grain', 'time', 'displacement', 'force']).to_csv(index=False, float_format='%.9g'))
     figures(exp, s, summary)
-    writeAtomic(os.path.join(out, 'summary.json'), json.dumps(finite(summary), indent=1))
+    writeAtomic(os.path.join(out, 'summary.json'), json.dumps(strictJson(summary), indent=1))
 
 
 def figures(exp, s, summary):
