@@ -4,7 +4,7 @@
 
     scripts/study.py run studies/frequency.table                      all cores of this machine
     scripts/study.py run studies/frequency.table --executor dask --scheduler tcp://HOST:8786
-    scripts/study.py status results/studies/frequency                what is done, what failed
+    scripts/study.py status results/studies/frequency                done, failed, how far started runs are
     scripts/study.py grid seed=1:5 f=0.25,0.5,1,2,4,8 -o studies/frequency.table
 """
 import argparse

@@ -231,6 +231,21 @@ def test_second_invocation_skips_finished_runs(study):
     assert [j['runId'] for j in journal].count(BAD) == 2
 
 
+def test_status_says_what_finished_failed_and_how_far_a_started_run_has_come(study, tmp_path):
+    d = tmp_path / 'copy'
+    shutil.copytree(study['local'], d)
+    shutil.rmtree(d / 'runs' / GOOD[1])   # as if it had not finished: started, its attempt in work/
+    attempt = d / 'work' / (GOOD[1] + '.abc123')
+    attempt.mkdir(parents=True)
+    (attempt / 'run.log').write_text('[oedometer 12.0s] load  t=0.1 s  step 100  dt=1e-06 s   42.5% of loading  ETA 3m10s\n')
+    p = run([STUDY, 'status', str(d)])
+    assert p.returncode == 0, p.stdout_text
+    lines = p.stdout_text.splitlines()
+    assert lines[0].endswith('3 rows: 1 failed, 1 finished, 1 todo'), lines
+    assert lines[1].startswith('  failed: %s: ' % BAD)
+    assert lines[2].startswith('  started: %s: 42.5%% of loading, ETA 3m10s, its log written ' % GOOD[1]), lines
+
+
 def test_aggregate_mean_and_std_by_hand(study, tmp_path):
     out = tmp_path / 'agg'
     p = run([AGGREGATE, str(study['local']), '--out', str(out), '--param', 'f'], timeout=60)  # f=200 in every row

@@ -110,15 +110,24 @@ def lastError(logPath):
 PROGRESS = re.compile(r'(\d+(?:\.\d+)?)% of (\w+)\s+ETA (\S+)')  # a progress line of experiments/phases.py
 
 
+def newestLog(work, runId):
+    """The run.log of the newest attempt of a run in the study's work directory, or None."""
+    try:
+        tries = [os.path.join(work, n) for n in os.listdir(work) if n.rsplit('.', 1)[0] == runId]
+        return max((os.path.join(t, 'run.log') for t in tries if os.path.isfile(os.path.join(t, 'run.log'))),
+                   key=os.path.getmtime, default=None)
+    except OSError:  # no work directory, or an attempt's folder went while we looked
+        return None
+
+
 def runProgress(work, runId):
     """How far the newest attempt of a run in the study's work directory has come, from the last
     progress line of its run.log ('24.8% of loading, ETA 23m32s'); '' when there is none yet."""
+    log = newestLog(work, runId)
+    if log is None:
+        return ''
     try:
-        tries = [os.path.join(work, n) for n in os.listdir(work) if n.rsplit('.', 1)[0] == runId]
-        logs = [os.path.join(t, 'run.log') for t in tries if os.path.isfile(os.path.join(t, 'run.log'))]
-        if not logs:
-            return ''
-        with open(max(logs, key=os.path.getmtime), 'rb') as fh:
+        with open(log, 'rb') as fh:
             fh.seek(max(0, os.fstat(fh.fileno()).st_size - 4096))  # a log grows to megabytes: its tail only
             tail = fh.read().decode('utf-8', 'replace')
     except OSError:  # the attempt ended and its folder went while we looked

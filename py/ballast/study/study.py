@@ -36,7 +36,7 @@ from ..params import ParamError
 from .files import codeSha1, readSummary, sha1, writeAtomic
 from .options import OPTIONS, StudyError, experimentDeclaration, optionValue
 from .records import hasRecord, keepRecord, recordPath, writeIndex
-from .runner import clearWork, failedLog, finalizeShipped, lastError, runProgress
+from .runner import clearWork, failedLog, finalizeShipped, lastError, newestLog, runProgress
 from .table import Table, resolvePaths, tableDir
 
 # yade-batch's !COLUMNS that are not environment variables of the run
@@ -417,3 +417,9 @@ def status(out):
     for rid in counts.get('failed', []):
         log = os.path.join(out, 'logs', rid + '.log')
         print('  failed: %s: %s (log %s)' % (rid, lastError(log), log))
+    for rid in counts.get('todo', []):  # started and not ended: running, or its runner died (the log's age says)
+        log = newestLog(os.path.join(out, 'work'), rid)
+        if log is not None:
+            print('  started: %s: %s, its log written %s ago (%s)' % (
+                rid, runProgress(os.path.join(out, 'work'), rid) or 'no progress line yet',
+                fmtTime(max(0, time.time() - os.path.getmtime(log))), log))
