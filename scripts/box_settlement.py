@@ -7,7 +7,8 @@ docs/box.md, "The study"):
     scripts/box_settlement.py docs/studies/box-sg --by fatigue keep --reference 'docs/studies/box-sg[fatigue=1
         keep=none]' --at 1 10 100 --out docs/studies/box-sg
 
-writes settlement.csv (every run's curve), settlement.json (per study: the mean curve's and every run's
+writes settlement.csv (every run's curve), runs.csv (per realization what it broke and cost: crushes, abrasions,
+largest fatigue damage and stress ratio, grains, CPU per cycle, step, the cycle it tips from), settlement.json (per study: the mean curve's and every run's
 logarithmic and power laws with R^2) and settlement.png; with --reference, all three over the cycles the other
 studies cover, and each other study's runs against the reference's of the same seed at the cycles --at:
 settlement-paired.csv (per seed and cycle) and settlement-paired.json (per cycle: the mean difference with its
@@ -34,6 +35,16 @@ def rise(text):
     if not value > 0 or value == float('inf'):
         raise argparse.ArgumentTypeError('%r mm; allowed: a rise above 0 mm, e.g. 0.02' % text)
     return value
+
+
+def span(values, fmt):
+    """'lo-hi' of a column over a study's realizations in `fmt` ('lo' when all agree once printed; '?' where the
+    records have no such column)."""
+    values = values.dropna()
+    if values.empty:
+        return '?'
+    lo, hi = fmt % values.min(), fmt % values.max()
+    return lo if lo == hi else '%s-%s' % (lo, hi)
 
 
 def main(argv=None):
@@ -72,6 +83,8 @@ def main(argv=None):
         return 2
     os.makedirs(a.out, exist_ok=True)
     frame.to_csv(os.path.join(a.out, 'settlement.csv'), index=False, float_format='%.9g')
+    runs = settlement.realizations(a.studies, by=a.by).merge(frame.groupby('runId').tippedAt.first().reset_index())
+    runs.to_csv(os.path.join(a.out, 'runs.csv'), index=False, float_format='%.9g')
     if pairs:
         rows = [r.assign(study=study) for study, (r, _) in pairs.items()]
         pd.concat(rows, ignore_index=True).to_csv(os.path.join(a.out, 'settlement-paired.csv'), index=False,
@@ -87,6 +100,13 @@ def main(argv=None):
                 study, a.reference, c['cycle'], c['seeds'], 1e3 * c['meanDifference'],
                 'none with one seed' if c['interval95'] is None else '+-%.4f' % (1e3 * c['interval95']),
                 c['meanRatio']))
+    for study, r in runs.groupby('study', sort=False):
+        print('%s: crushes %s, abrasions %s, largest fatigue damage %s, largest stress ratio %s, grains %s after cycle '
+              '1 and %s at the end, %s s of CPU a cycle, step %s s (%s steps a cycle)' % (
+                  study, span(r.crushes, '%d'), span(r.abrasions, '%d'), span(r.maxDamage, '%.3g'),
+                  span(r.maxStressRatio, '%.3g'),
+                  span(r.grainsCycle1, '%d'), span(r.grainsLast, '%d'), span(r.cpuPerCycle, '%.1f'), span(r.timeStep, '%.3g'),
+                  span(r.stepsPerCycle, '%.0f')))
     for study, f in fits.items():
         for rid, n in f['tippedAt'].items():
             print('%s: %s tips from cycle %d (read apart)' % (study, rid, n))

@@ -205,3 +205,30 @@ def test_the_variants_of_one_study_are_studies_of_their_own(tmp_path, capsys):
         assert json.load(fh)[off]['perCycle'][0]['meanRatio'] == pytest.approx(0.9, rel=1e-9)
     assert main([root, '--by', 'fatigue', '--reference', root + '[fatigue=2]', '--out', out]) == 2
     assert '--reference %s[fatigue=2]: no such study or variant; there are' % root in capsys.readouterr().err
+
+
+def test_each_realization_reports_what_it_broke_and_cost_over_all_its_slices(tmp_path, capsys):
+    # seed 1 in two slices (the second's cycles.csv holds cycles 1-8, its cycle 5 without CPU as a resumed slice's
+    # first), seed 2 in one; crushes 1 in cycles 2 and 6 of seed 1: 2 in all, grains 10 -> 14
+    root = study(str(tmp_path / 'box'), {'s1-c4': (1, [1e-4] * 4), 's1-c8': (1, [1e-4] * 8), 's2-c8': (2, [2e-4] * 8)},
+                 continueFrom={'s1-c8': 's1-c4'})
+    for rid, crushes, cpu in (('s1-c8', [0, 1, 0, 0, 0, 1, 0, 0], [2, 2, 2, 2, math.nan, 4, 4, 4]),
+                              ('s2-c8', [0] * 8, [3] * 8)):
+        grains = 10 + 2 * np.cumsum(crushes)
+        damage = np.linspace(0, 0.5, 8)
+        with open(os.path.join(root, 'runs', rid, 'cycles.csv'), 'w') as fh:
+            fh.write('cycle,settlement,crushes,abrasions,maxDamage,maxStressRatio,nGrains,cpuSeconds\n' + ''.join(
+                '%d,1e-4,%d,0,%r,0.6,%d,%r\n' % (n + 1, crushes[n], damage[n], grains[n], cpu[n]) for n in range(8)))
+        with open(os.path.join(root, 'runs', rid, 'summary.json'), 'w') as fh:
+            json.dump({'params': {'seed': int(rid[1]), 'continueFrom': '/x/runs/s1-c4/state-end.yade.gz' if rid == 's1-c8'
+                                  else ''}, 'dt': 1e-6, 'stepsPerCycle': 4e4}, fh)
+    r = settlement.realizations([root]).set_index('runId')
+    assert sorted(r.index) == ['s1-c8', 's2-c8']   # a realization once, as its last slice
+    one = r.loc['s1-c8']
+    assert (one.cycles, one.crushes, one.grainsCycle1, one.grainsLast) == (8, 2, 10, 14)
+    assert one.cpuPerCycle == pytest.approx((4 * 2 + 3 * 4) / 7, rel=1e-12)   # over the 7 cycles with a CPU time
+    assert one.maxDamage == pytest.approx(0.5) and one.timeStep == 1e-6 and r.loc['s2-c8'].crushes == 0
+    assert boxSettlement()([root, '--out', str(tmp_path / 'out')]) == 0
+    written = __import__('pandas').read_csv(str(tmp_path / 'out' / 'runs.csv'))
+    assert list(written.runId) == ['s1-c8', 's2-c8'] and 'tippedAt' in written
+    assert 'crushes 0-2, abrasions 0, largest fatigue damage 0.5' in capsys.readouterr().out

@@ -53,26 +53,51 @@ def curves(paths, apart=(), tipping=None, by=()):
     if tipping is not None and not (isinstance(tipping, (int, float)) and math.isfinite(tipping) and tipping > 0):
         raise ValueError('curves: tipping = %r m; allowed: a rise above 0 m, or None (no detection)' % (tipping,))
     rows = []
+    for label, run, c in realizationRuns(paths, by):
+        seed = run.params.get('seed')
+        s = total(c)
+        onset = tippingOnset(c['cycle'], s, tipping) if tipping is not None else None
+        rows.append(pd.DataFrame({'study': label, 'runId': run.runId, 'seed': seed,
+                                  'cycle': c['cycle'].astype(int), 'settlement': s,
+                                  'resilient': c['resilient'] if 'resilient' in c else math.nan,
+                                  'apart': seed in apart,
+                                  'tippedAt': math.nan if onset is None else float(onset)}))
+    if not rows:
+        raise ValueError('curves: no run with a cycles.csv (cycle, settlement) in %s' % ', '.join(paths))
+    return pd.concat(rows, ignore_index=True)
+
+
+def realizationRuns(paths, by=()):
+    """(study or variant label, run, its cycles.csv) of every finished realization of the studies at `paths` that
+    wrote cycles.csv with cycle and settlement, a realization run in slices once: as its last slice."""
     for path in paths:
         study = StudyRuns(path)
         earlier = continued(study.runs)
         for run in study.runs:
-            if run.runId in earlier:
-                continue
-            c = run.cycles
-            if c is None or 'settlement' not in c:
-                continue
-            seed = run.params.get('seed')
-            s = total(c)
-            onset = tippingOnset(c['cycle'], s, tipping) if tipping is not None else None
-            rows.append(pd.DataFrame({'study': variantLabel(path, run.params, by), 'runId': run.runId, 'seed': seed,
-                                      'cycle': c['cycle'].astype(int), 'settlement': s,
-                                      'resilient': c['resilient'] if 'resilient' in c else math.nan,
-                                      'apart': seed in apart,
-                                      'tippedAt': math.nan if onset is None else float(onset)}))
-    if not rows:
-        raise ValueError('curves: no run with a cycles.csv (cycle, settlement) in %s' % ', '.join(paths))
-    return pd.concat(rows, ignore_index=True)
+            c = None if run.runId in earlier else run.cycles
+            if c is not None and 'settlement' in c:
+                yield variantLabel(path, run.params, by), run, c
+
+
+def realizations(paths, by=()):
+    """What each realization of the studies at `paths` cost and broke, a row each (realizationRuns): study, runId,
+    seed, cycles; over all its cycles (the last slice's cycles.csv holds the earlier ones) the crushes and
+    abrasions, the largest fatigue damage and stress ratio, the grains after cycle 1 and at the end, and the CPU
+    seconds per cycle (over the cycles that have it: a continued slice's first has none); from its last slice's
+    summary.json the step (timeStep, its dt [s]) and the steps per cycle. NaN where the records have no such
+    column (records of before a column was written)."""
+    rows = []
+    for label, run, c in realizationRuns(paths, by):
+        def over(name, how):
+            return float(how(c[name].to_numpy())) if name in c else math.nan
+        s = run.summary or {}
+        rows.append({'study': label, 'runId': run.runId, 'seed': run.params.get('seed'), 'cycles': int(c['cycle'].max()),
+                     'crushes': over('crushes', np.sum), 'abrasions': over('abrasions', np.sum),
+                     'maxDamage': over('maxDamage', np.max), 'maxStressRatio': over('maxStressRatio', np.max),
+                     'grainsCycle1': over('nGrains', lambda v: v[0]), 'grainsLast': over('nGrains', lambda v: v[-1]),
+                     'cpuPerCycle': over('cpuSeconds', np.nanmean), 'timeStep': float(s.get('dt', math.nan)),
+                     'stepsPerCycle': float(s.get('stepsPerCycle', math.nan))})
+    return pd.DataFrame(rows)
 
 
 def upTo(frame, last):
