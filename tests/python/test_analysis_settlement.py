@@ -227,6 +227,7 @@ def test_each_realization_reports_what_it_broke_and_cost_over_all_its_slices(tmp
     one = r.loc['s1-c8']
     assert (one.cycles, one.crushes, one.grainsCycle1, one.grainsLast) == (8, 2, 10, 14)
     assert one.cpuPerCycle == pytest.approx((4 * 2 + 3 * 4) / 7, rel=1e-12)   # over the 7 cycles with a CPU time
+    assert one.cpuPerRealization == pytest.approx(8 * (4 * 2 + 3 * 4) / 7, rel=1e-12)
     assert one.maxDamage == pytest.approx(0.5) and one.timeStep == 1e-6 and r.loc['s2-c8'].crushes == 0
     assert boxSettlement()([root, '--out', str(tmp_path / 'out')]) == 0
     written = __import__('pandas').read_csv(str(tmp_path / 'out' / 'runs.csv'))

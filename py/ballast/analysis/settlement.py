@@ -83,7 +83,8 @@ def realizations(paths, by=()):
     """What each realization of the studies at `paths` cost and broke, a row each (realizationRuns): study, runId,
     seed, cycles; over all its cycles (the last slice's cycles.csv holds the earlier ones) the crushes and
     abrasions, the largest fatigue damage and stress ratio, the grains after cycle 1 and at the end, and the CPU
-    seconds per cycle (over the cycles that have it: a continued slice's first has none); from its last slice's
+    seconds per cycle (over the cycles that have it: a continued slice's first has none) and per realization (that
+    mean times its cycles); from its last slice's
     summary.json the step (timeStep, its dt [s]) and the steps per cycle. NaN where the records have no such
     column (records of before a column was written)."""
     rows = []
@@ -97,7 +98,10 @@ def realizations(paths, by=()):
                      'grainsCycle1': over('nGrains', lambda v: v[0]), 'grainsLast': over('nGrains', lambda v: v[-1]),
                      'cpuPerCycle': over('cpuSeconds', np.nanmean), 'timeStep': float(s.get('dt', math.nan)),
                      'stepsPerCycle': float(s.get('stepsPerCycle', math.nan))})
-    return pd.DataFrame(rows)
+    frame = pd.DataFrame(rows)
+    if len(frame):
+        frame['cpuPerRealization'] = frame.cpuPerCycle * frame.cycles   # [s], its cycles at the mean cost
+    return frame
 
 
 def upTo(frame, last):
