@@ -30,8 +30,7 @@ def before(path):
             for key in ('rows', 'checkRows'):
                 entry['state'][key] = [list(r) for r in runtime.unpackRows(entry['state'][key])]
     O.tags[runtime.TAG] = json.dumps(doc)
-    Omega = type(O)
-    Omega.save._ballastOriginal(O, path)   # YADE's save without the runtime's flush, which would pack again
+    runtime.saveAsYade(path)   # without the runtime's flush, which would pack the rows again
 
 
 def main(argv):

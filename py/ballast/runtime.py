@@ -334,6 +334,12 @@ def _wrap(name, before=None, after=None):
     setattr(Omega, name, method)
 
 
+def saveAsYade(path):
+    """O.save as YADE itself does it, without the flush of the package's objects into O.tags that the runtime
+    adds to it (for a caller that has written O.tags itself: bench/bench_save.py)."""
+    Omega.save._ballastOriginal(O, path)
+
+
 def _forget():
     global _scene
     _scene = None

@@ -69,6 +69,16 @@ def test_nothing_is_written_while_running_and_one_key_when_saving(tmp_path):
     assert states == [5, 100]
 
 
+def test_saving_as_yade_does_leaves_the_tags_as_they_are(tmp_path):
+    c = scene()
+    O.run(5, True)
+    O.save(str(tmp_path / 'a.yade.gz'))      # the objects' states flushed into O.tags: 5 calls
+    O.run(2, True)
+    runtime.saveAsYade(str(tmp_path / 'b.yade.gz'))
+    assert c.calls == 7 and 5 in [o['state']['calls'] for o in json.loads(O.tags[runtime.TAG])['objects'].values()]
+    assert os.path.getsize(str(tmp_path / 'b.yade.gz')) > 0
+
+
 def test_load_in_this_process_rebuilds_from_the_saved_state(tmp_path):
     c = scene()
     O.run(4, True)
