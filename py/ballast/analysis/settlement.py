@@ -84,9 +84,8 @@ def realizations(paths, by=()):
     seed, cycles; over all its cycles (the last slice's cycles.csv holds the earlier ones) the crushes and
     abrasions, the largest fatigue damage and stress ratio, the grains after cycle 1 and at the end, and the CPU
     seconds per cycle (over the cycles that have it: a continued slice's first has none) and per realization (that
-    mean times its cycles); from its last slice's
-    summary.json the step (timeStep, its dt [s]) and the steps per cycle. NaN where the records have no such
-    column (records of before a column was written)."""
+    mean times its cycles); from its last slice's summary.json the step (timeStep, its dt [s]) and the steps per
+    cycle. NaN where the records have no such column (records of before a column was written)."""
     rows = []
     for label, run, c in realizationRuns(paths, by):
         def over(name, how):
