@@ -74,8 +74,12 @@ def main(argv=None):
         names = list(frame.study.unique())
         if a.reference and a.reference not in names:
             raise ValueError('--reference %s: no such study or variant; there are %s' % (a.reference, ', '.join(names)))
-        if a.reference:   # compared over the cycles the other studies cover: the reference's curves cut there
-            frame = settlement.upTo(frame, frame[frame.study != a.reference].cycle.max())
+        others = frame[frame.study != a.reference]
+        if a.reference and others.empty:   # a variants study under way: its first variant only, nothing to pair yet
+            print('box_settlement.py: --reference %s: no other study or variant yet, nothing paired' % a.reference,
+                  file=sys.stderr)
+        elif a.reference:   # compared over the cycles the other studies cover: the reference's curves cut there
+            frame = settlement.upTo(frame, others.cycle.max())
         fits = settlement.summary(frame)
         pairs = {study: settlement.paired(frame, study, a.reference, a.at) for study in names
                  if a.reference and study != a.reference}

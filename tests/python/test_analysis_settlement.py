@@ -205,6 +205,13 @@ def test_the_variants_of_one_study_are_studies_of_their_own(tmp_path, capsys):
         assert json.load(fh)[off]['perCycle'][0]['meanRatio'] == pytest.approx(0.9, rel=1e-9)
     assert main([root, '--by', 'fatigue', '--reference', root + '[fatigue=2]', '--out', out]) == 2
     assert '--reference %s[fatigue=2]: no such study or variant; there are' % root in capsys.readouterr().err
+    # the variants study under way, its reference variant alone: read, nothing paired, said so
+    first = study(str(tmp_path / 'first'), {k: v for k, v in runs.items() if k.startswith('on')})
+    alone = str(tmp_path / 'alone')
+    assert main([first, '--by', 'fatigue', 'keep', '--reference', first + '[fatigue=1 keep=none]', '--out', alone]) == 0
+    assert 'nothing paired' in capsys.readouterr().err and not os.path.exists(os.path.join(alone, 'settlement-paired.csv'))
+    with open(os.path.join(alone, 'settlement.json')) as fh:
+        assert json.load(fh)[first + '[fatigue=1 keep=none]']['cycles'] == 20   # not cut to nothing
 
 
 def test_each_realization_reports_what_it_broke_and_cost_over_all_its_slices(tmp_path, capsys):
