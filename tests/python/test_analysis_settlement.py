@@ -240,3 +240,17 @@ def test_each_realization_reports_what_it_broke_and_cost_over_all_its_slices(tmp
     written = __import__('pandas').read_csv(str(tmp_path / 'out' / 'runs.csv'))
     assert list(written.runId) == ['s1-c8', 's2-c8'] and 'tippedAt' in written
     assert 'crushes 0-2, abrasions 0, largest fatigue damage 0.5' in capsys.readouterr().out
+
+
+def test_the_axes_fit_the_data_not_a_law_that_fits_it_badly(tmp_path, monkeypatch):
+    # a collapse: 0.3 mm for 49 cycles, then 80 mm; a + b ln N runs far below 0 at N = 1, the panel must not follow it
+    s = [3e-4] * 49 + [8e-2] * 51
+    root = study(str(tmp_path / 'sg'), {'c': (1, s)})
+    frame = settlement.curves([root])
+    fits = settlement.summary(frame)
+    law = fits[root]['mean']['log']
+    assert law['a'] < -0.05 and law['r2'] < 0.8   # the law's own value at N = 1: below -50 mm
+    (ax,) = drawn(monkeypatch, frame, fits, tmp_path)
+    low, high = ax.get_ylim()
+    assert -0.1 * 80 < low < 0.3 and 80 < high < 1.1 * 80   # [mm] the data's range and matplotlib's margin
+    assert len(ax.get_lines()) == 3   # the run, the mean and the law, drawn all the same

@@ -201,7 +201,8 @@ APART_STYLES = (':', '-.', '--', (0, (1, 3)))  # line styles of the runs read ap
 
 def figure(frame, fits, path):
     """Settlement against log N: every run thin, the mean of each study thick, its logarithmic law dashed.
-    Runs read apart (a tipping sleeper swings by millimetres) get a panel of their own below, so that the
+    The axes fit the data, not the laws (a law that fits badly runs off the panel). Runs read apart (a tipping
+    sleeper swings by millimetres) get a panel of their own below, so that the
     settling runs keep the scale of the top panel; there they are drawn only up to their tipping cycle."""
     import matplotlib
     matplotlib.use('Agg')
@@ -213,6 +214,7 @@ def figure(frame, fits, path):
         fig, (ax, low) = plt.subplots(2, 1, figsize=(6.6, 6.6), sharex=True, gridspec_kw={'height_ratios': (2, 1)})
     else:
         fig, ax = plt.subplots(figsize=(6.6, 4.4))
+    laws = []
     for k, (study, g) in enumerate(frame.groupby('study', sort=False)):
         colour = 'C%d' % k
         f = fits[study]
@@ -231,10 +233,12 @@ def figure(frame, fits, path):
         ax.semilogx(mean.index, 1e3 * mean.values, '-', color=colour, lw=2.2,
                     label='%s: mean of %d runs' % (study.rstrip('/').split('/')[-1], f['runs']))
         if f['mean'] is not None:
-            law = f['mean']['log']
-            N = np.array(mean.index, float)
-            ax.semilogx(N, 1e3 * (law['a'] + law['b'] * np.log(N)), '--', color=colour, lw=1,
-                        label='a + b ln N: b = %.3g mm, R$^2$ = %.3f' % (1e3 * law['b'], law['r2']))
+            laws.append((colour, f['mean']['log'], np.array(mean.index, float)))
+    ax.set_xlim(ax.get_xlim())   # the scale the data set, kept while the laws are drawn
+    ax.set_ylim(ax.get_ylim())
+    for colour, law, N in laws:
+        ax.semilogx(N, 1e3 * (law['a'] + law['b'] * np.log(N)), '--', color=colour, lw=1,
+                    label='a + b ln N: b = %.3g mm, R$^2$ = %.3f' % (1e3 * law['b'], law['r2']))
     ax.set_ylabel('permanent settlement [mm]')
     axes = (ax, low) if split else (ax,)
     if split:
