@@ -21,6 +21,7 @@ from ballast.study.files import codeSha1, readSummary, writeAtomic
 from study_fakes import writeFakeYade
 
 TABLE = 'seed f\n1 2\n'
+TIMEOUT = 5   # [s] of a run that hangs: well after the fake has started with its child, even on a loaded machine
 SCRIPT = '# the oedometer, as the client read it\n'
 
 
@@ -129,19 +130,23 @@ def processGone(pid):
 
 @pytest.mark.parametrize('why', ['timeout', 'stopped'])
 def test_a_run_past_its_timeout_or_stopped_is_killed_with_its_children(spec, why):
+    """Killed once the fake runs with its child (its pid file written): on a loaded machine its start takes
+    seconds, and a kill before it would leave nothing to check (the stop waits for the file; the timeout, TIMEOUT
+    s, is long enough)."""
     os.makedirs(spec['packings'])
+    pidFile = os.path.join(os.path.dirname(spec['out']), 'fake-pids.json')
     if why == 'stopped':
-        threading.Timer(0.3, runner.STOP.set).start()
+        threading.Thread(target=lambda: waitUntil(lambda: os.path.exists(pidFile), 60) and runner.STOP.set(),
+                         daemon=True).start()
     try:
-        pidFile = os.path.join(os.path.dirname(spec['out']), 'fake-pids.json')
         res = runner.runRow(dict(spec, env={'FAKE': 'hang', 'FAKE_PIDS': pidFile},
-                                 timeout=0.3 if why == 'timeout' else None))
+                                 timeout=TIMEOUT if why == 'timeout' else None))
         if why == 'stopped':
             assert runner.runRow(spec) is None  # the study stopped before this run's turn: it does not start
     finally:
         runner.STOP.clear()
     assert res['status'] == why and res['rc'] < 0, res  # killed by a signal
-    assert ('--timeout of 0.3 s' if why == 'timeout' else 'interrupted') in res['error']
+    assert ('--timeout of %g s' % TIMEOUT if why == 'timeout' else 'interrupted') in res['error']
     log = open(os.path.join(spec['out'], 'logs', spec['runId'] + '.log')).read()
     assert ('(FAILED)' if why == 'timeout' else '(STOPPED)') in log
     # a timeout is a failure (kept in failed/), a stopped run is simply redone
