@@ -144,12 +144,13 @@ class Table:
                 self.path, ', '.join(ours)))
         params, bad = {}, []
         for n, row in self.rows:
-            unread = [c for c, raw in self.cells(n).items() if not readable(raw)]
+            cells = self.cells(n)
+            unread = [c for c, raw in cells.items() if not readable(raw)]
             if unread:  # the run would fail on it at its start: readParamsFromTable evaluates every cell
                 bad += ['%s:%d: column %s, value %s: %s' % (self.path, n, c, row[c], UNREADABLE) for c in unread]
                 continue
             try:
-                params[n] = d.check(resolvePaths(self.cells(n), d, tableDir(self.path)), text=True)
+                params[n] = d.check(resolvePaths(cells, d, tableDir(self.path)), text=True)
             except ParamError as e:
                 if e.name in row:
                     bad.append('%s:%d: column %s, value %s: %s' % (self.path, n, e.name, row[e.name], e))
