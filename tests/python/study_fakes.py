@@ -7,7 +7,7 @@ test_study_study.py): it keeps the oedometer's command-line contract,
 builds the packing its row needs when it is not stored, and writes DIR/ID/summary.json, fd.csv and
 seen.json (what it was given). The environment variable FAKE (a '!FAKE' column of the table) makes
 it fail (exit 3, leaving a partial output), hang (with a child process; both pids in pids.json, and in
-the file FAKE_PIDS names if set),
+the file FAKE_PIDS names if set; a state to resume from saved first),
 end without a summary, with a summary cut in half (exit 0 both), or be killed by SIGKILL mid-run."""
 import json
 import os
@@ -32,7 +32,7 @@ rows = [l.split() for l in lines if l.strip() and not l.startswith('#')]
 cells = dict(zip([h[:-1] if h.endswith('!') else h for h in rows[0]], lines[int(line) - 1].split()))
 p = dict(oedometer.check({k: v for k, v in cells.items() if not k.startswith('!') and k != 'description'}, text=True))
 out = os.path.join(opts['--results'], opts['--runId'])
-os.makedirs(out)
+os.makedirs(out, exist_ok=('--resume' in opts))   # a run that resumes finds its folder
 with open(os.path.join(out, 'seen.json'), 'w') as fh:
     json.dump({'argv': argv, 'script': open(script).read(), 'OMP_NUM_THREADS': os.environ.get('OMP_NUM_THREADS'),
                'packings': sorted(os.listdir(opts['--packingDir']))}, fh)
@@ -43,6 +43,10 @@ if mode == 'fail':
     print('RuntimeError: the fake failed on purpose')
     sys.exit(3)
 if mode == 'hang':
+    # a state saved to go on from, as an experiment that declares resume leaves it (ballast.study.files.killedRunState)
+    open(os.path.join(out, 'state-1.gz'), 'w').close()
+    with open(os.path.join(out, 'run.json'), 'w') as fh:
+        json.dump({'status': 'running', 'lastState': 'state-1.gz'}, fh)
     helper = subprocess.Popen(['sleep', '120'])
     # FAKE_PIDS: a copy that outlives the run's folder (a stopped run's is removed)
     for path in filter(None, [os.path.join(out, 'pids.json'), os.environ.get('FAKE_PIDS')]):

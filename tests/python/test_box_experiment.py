@@ -181,6 +181,65 @@ def test_a_long_run_killed_goes_on_from_its_last_state(run, tmp_path):
     assert b.resilient.iloc[2] == pytest.approx(a.resilient.iloc[2], rel=10 * TOL_RESUME)
 
 
+def killedCopy(test, results, state):
+    """The fixture's run copied to results/<run id> as a run killed after it saved `state`: run.json 'running'
+    with a process that is gone, no summary.json, no state-end."""
+    folder = os.path.join(results, test.runId)
+    shutil.copytree(test.out, folder)
+    for name in ('summary.json', 'state-end.yade.gz'):
+        os.remove(os.path.join(folder, name))
+    gone = subprocess.Popen(['true'])
+    gone.wait()
+    with open(os.path.join(folder, 'run.json')) as fh:
+        doc = json.load(fh)
+    doc.update(status='running', lastState=state, pid=gone.pid)
+    with open(os.path.join(folder, 'run.json'), 'w') as fh:
+        json.dump(doc, fh)
+    return folder
+
+
+def test_a_killed_run_resumed_goes_on_in_its_folder_to_its_end(run, tmp_path):
+    """resume: the run killed after its state of cycle 2 goes on from it in its own folder: cycles 1-2 as saved, cycle
+    3 taken again, samples.csv cut back to the state's time and taken again at the same times (a row more or less
+    per sample period if the cut were wrong), run.json finished and saying where it went on from."""
+    test, s = run
+    folder = killedCopy(test, str(tmp_path), 'state-cycle0000002.yade.gz')
+    s2 = BoxTest(results=str(tmp_path), runId=test.runId, resume=True, vtk=True, saveEvery=2, **SMALL).run()
+    assert sorted(os.listdir(str(tmp_path))) == [test.runId]   # no new folder
+    old = pd.read_csv(os.path.join(test.out, 'cycles.csv')).drop(columns='cpuSeconds')
+    new = pd.read_csv(os.path.join(folder, 'cycles.csv')).drop(columns='cpuSeconds')
+    assert list(new.cycle) == [1, 2, 3] and s2['cycles'] == 3 and s2['params']['resume'] is True
+    pd.testing.assert_frame_equal(old.iloc[:2], new.iloc[:2])
+    a, b = (pd.read_csv(os.path.join(d, 'samples.csv')) for d in (test.out, folder))
+    assert len(b) == len(a) and np.allclose(b.t, a.t, rtol=0, atol=1e-6)
+    assert (np.diff(b.t) > 0).all()
+    with open(os.path.join(folder, 'run.json')) as fh:
+        doc = json.load(fh)
+    assert doc['status'] == 'finished' and doc['resumedFrom'] == 'state-cycle0000002.yade.gz'
+    assert abs(s2['massLedgerError']) <= 1e-12 * s2['massInitial']
+
+
+def test_resume_refuses_a_live_run_and_other_physics_and_starts_afresh_without_a_killed_run(run, tmp_path):
+    test, s = run
+    with pytest.raises(ParamError, match="resume = True is not allowed: give runId"):
+        BoxTest(results=str(tmp_path), resume=True, **SMALL)
+    assert BoxTest(results=str(tmp_path), runId='none', resume=True, **SMALL).resumeKilled() is None
+    folder = killedCopy(test, str(tmp_path), 'state-cycle0000002.yade.gz')
+    with pytest.raises(ParamError, match=r"ft0 = 40000.0 is not allowed with resume .*the saved run has ft0 = 35000.0"):
+        BoxTest(results=str(tmp_path), runId=test.runId, resume=True, **dict(SMALL, ft0=4e4)).run()
+    live = subprocess.Popen(['sleep', '60'])
+    try:
+        with open(os.path.join(folder, 'run.json')) as fh:
+            doc = json.load(fh)
+        with open(os.path.join(folder, 'run.json'), 'w') as fh:
+            json.dump(dict(doc, pid=live.pid), fh)
+        with pytest.raises(ParamError, match=r"resume = 1 is not allowed: the run in .* is alive \(pid %d\)" % live.pid):
+            BoxTest(results=str(tmp_path), runId=test.runId, resume=True, **SMALL).run()
+    finally:
+        live.kill()
+        live.wait()
+
+
 def test_a_run_in_slices_goes_on_from_a_state_and_refuses_other_physics(run, tmp_path):
     test, s = run
     end = os.path.join(test.out, 'state-end.yade.gz')

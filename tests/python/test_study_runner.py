@@ -44,6 +44,8 @@ def test_the_command_line_sets_what_the_declaration_says():
     spec = dict(spec, nice=5, sets=declaration('oedometer').sets)
     assert runner.command(spec, 'a.py', '/res', '/samples') == ['yade', '--nice=5', '-n', '-x', 'a.py', '--results', '/res',
                                                               '--runId', 'r1', '--packingDir', '/samples']
+    spec = dict(spec, nice=None, sets=declaration('box').sets)
+    assert runner.command(spec, 'a.py', '/res', '/beds', resume=True)[-4:] == ['--bedDir', '/beds', '--resume', '1']
 
 
 def seen(d):
@@ -327,3 +329,59 @@ def test_a_running_runs_progress_is_read_from_the_tail_of_its_newest_log(tmp_pat
     assert runner.runProgress(str(work), 'r') == '100.0% of loading, ETA 1m'   # line 9 999 (%5.1f)
     (new / 'run.log').write_text('[box 0.2s] prepare  t=0 s  step 0\n')   # no progress line in its tail
     assert runner.runProgress(str(work), 'r') == ''
+
+
+def attempt(work, runId, row, state='state-1.gz'):
+    """The work folder a dead runner's attempt left: its row and a run that saved `state` (None: none yet)."""
+    path = os.path.join(work, runId + '.dead1234')
+    runDir = os.path.join(path, 'results', runId)
+    os.makedirs(runDir)
+    writeAtomic(os.path.join(path, 'row.json'), json.dumps(row))
+    writeAtomic(os.path.join(runDir, 'run.json'), json.dumps(dict({'status': 'running'}, **(
+        {'lastState': state} if state else {}))))
+    if state:
+        writeAtomic(os.path.join(runDir, state), 'saved')
+    return path
+
+
+def test_a_killed_run_with_a_saved_state_is_kept_and_goes_on_only_from_its_own_row(tmp_path):
+    work, keep, row = str(tmp_path / 'work'), str(tmp_path / 'resume'), {'seed': '1', 'f': '2'}
+    attempt(work, 'a', row)
+    attempt(work, 'b', row, state=None)   # killed before it saved a state: nothing to go on from
+    records = {r['runId']: r for r in runner.clearWork(work, keep=keep)}
+    assert records['a']['error'].endswith('; kept to go on from its state-1.gz') and records['a']['kept'] == 'state-1.gz'
+    assert 'kept' not in records['b']['error'] and records['b']['kept'] is None
+    assert os.listdir(work) == [] and sorted(os.listdir(keep)) == ['a']
+    assert runner.takeKept(keep, 'a', dict(row, f='3'), str(tmp_path / 'r1')) is None   # the row changed: dropped
+    assert os.listdir(keep) == [] and not os.path.exists(str(tmp_path / 'r1'))
+    attempt(work, 'a', row)
+    runner.clearWork(work, keep=keep)
+    assert runner.takeKept(keep, 'a', row, str(tmp_path / 'r2')) == 'state-1.gz'
+    assert os.path.isfile(str(tmp_path / 'r2' / 'a' / 'state-1.gz')) and os.listdir(keep) == []
+    attempt(work, 'c', row)
+    assert runner.clearWork(work)[0]['runId'] == 'c' and not os.path.exists(os.path.join(keep, 'c'))   # no keep: removed
+
+
+def test_a_stopped_run_of_a_resuming_experiment_is_kept_and_the_next_attempt_resumes(spec):
+    """sets with resume (the box test's): the run stopped after it saved a state is kept in resume/; the next run of
+    the row is given its folder and --resume 1, and its row.json says where it went on from."""
+    os.makedirs(spec['packings'])
+    spec = dict(spec, sets=dict(spec['sets'], resume='resume'))
+    pidFile = os.path.join(os.path.dirname(spec['out']), 'fake-pids.json')
+    threading.Thread(target=lambda: waitUntil(lambda: os.path.exists(pidFile), 60) and runner.STOP.set(),
+                     daemon=True).start()
+    try:
+        res = runner.runRow(dict(spec, env={'FAKE': 'hang', 'FAKE_PIDS': pidFile}))
+    finally:
+        runner.STOP.clear()
+    assert res['status'] == 'stopped' and res['error'].endswith('kept to go on from its state-1.gz'), res
+    kept = os.path.join(spec['out'], runner.KEEP, spec['runId'])
+    assert os.path.isfile(os.path.join(kept, 'run', 'state-1.gz'))
+    res = runner.runRow(spec)
+    assert res['status'] == 'ok' and res['resumedFrom'] == 'state-1.gz', res
+    run = os.path.join(spec['out'], 'runs', spec['runId'])
+    assert seen(run)['argv'][-2:] == ['--resume', '1'] and os.path.isfile(os.path.join(run, 'state-1.gz'))
+    with open(os.path.join(run, 'row.json')) as fh:
+        assert json.load(fh)['resumedFrom'] == 'state-1.gz'
+    assert not os.path.exists(kept)
+    assert runner.runRow(dict(spec, runId='other'))['resumedFrom'] is None   # nothing kept: starts afresh

@@ -19,6 +19,7 @@ is a killed run.
 A subclass gives ``NAME``, ``Parameters`` (its Parameters class), ``REOPEN_PARAMS`` (what a reopened
 run may change: where and how it reports, not the physics), ``prepare()``, ``summary()``, and its
 state (``state()``, ``fromState()``); its pieces are registered objects of their own. A cyclic experiment
+declares ``resume`` goes on with a killed run (:meth:`Experiment.resumeKilled`) and gives ``resumed(state)``. One that
 offers cycle jumping (``jump``, docs/cycles.md) with :meth:`startJumping` when its cycles start, a
 ``jumper`` piece, :meth:`cycleClosed` at each simulated cycle's end and :meth:`jumped` if it counts cycles.
 """
@@ -38,7 +39,7 @@ from . import chain, grains, timestep
 from .cyclejump import CycleJumper
 from ..names import runDirName
 from ..params import CRUSH, ParamError, requireWritableDir
-from ..study.files import syncDir, writeAtomic
+from ..study.files import killedRunState, runStatus, syncDir, writeAtomic
 from .phases import Phases
 
 STATUS_FILE = 'run.json'
@@ -82,6 +83,19 @@ def checkStateFile(path, who='reopen'):
         bad('its content is not a YADE state (neither XML nor a boost archive: it starts with %r)' % head[:16])
 
 
+def processAlive(pid):
+    """True if pid (an int) is a live process of this machine other than this one."""
+    if not isinstance(pid, int) or pid <= 0 or pid == os.getpid():
+        return False
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:   # alive, another user's
+        return True
+    return True
+
+
 @runtime.persistent('RunDirectory')
 class RunDirectory:
     """<results>/<run id>/, created atomically when first needed; an existing one is never reused (a
@@ -113,6 +127,10 @@ class RunDirectory:
 
     def file(self, name):
         return os.path.join(self.create(), name)
+
+    def goOnIn(self, path):
+        """A killed run that goes on (Experiment.resumeKilled) writes into its own folder, not a new one."""
+        self.path, self.runId = path, os.path.basename(path)
 
     def writeStatus(self, status, **info):
         """run.json: the status ('running', 'finished') and what else the experiment says, written atomically."""
@@ -375,6 +393,36 @@ class Experiment:
 
     def reopened(self):
         """After fromScene (subclasses: say where the run goes on)."""
+
+    def requireSamePhysics(self, saved, how):
+        """ParamError naming the first parameter beyond REOPEN_PARAMS whose value differs from the saved run's."""
+        for k in self.Parameters.PARAMS:
+            if k not in self.REOPEN_PARAMS and saved.p[k] != self.p[k]:
+                raise ParamError(k, '%s: %s = %r is not allowed with %s: the saved run has %s = %r' % (
+                    self.Parameters.OWNER, k, self.p[k], how, k, saved.p[k]))
+
+    def resumeKilled(self):
+        """With resume: the run killed in <results>/<runId> (run.json 'running') reopened from the last state it
+        saved, in its own folder, and taken to the end it was going to (the subclass's resumed(state)). Returns
+        the summary, or None when that folder holds no killed run with a saved state (this run then starts afresh).
+        ParamError when that run's process is alive on this machine or its physics is not this run's."""
+        p = self.p
+        if not p.get('resume'):
+            return None
+        folder = os.path.join(p['results'], runDirName(p['runId']))
+        state = killedRunState(folder)
+        if state is None:
+            self.say('resume: no killed run with a saved state in %s: the run starts afresh' % folder)
+            return None
+        doc = runStatus(folder)
+        if doc.get('host') == socket.gethostname() and processAlive(doc.get('pid')):
+            raise ParamError('resume', '%s: resume = 1 is not allowed: the run in %s is alive (pid %d); stop it first' % (
+                self.Parameters.OWNER, folder, doc['pid']))
+        exp = type(self).reopen(state, **{k: p[k] for k in self.REOPEN_PARAMS})
+        self.requireSamePhysics(exp, 'resume (the killed run has other values)')
+        exp.dir.goOnIn(folder)
+        exp.markRunning(resumedFrom=os.path.basename(state))
+        return exp.resumed(state)
 
     # ------------------------------------------------------------------ density scaling (experiments.timestep)
     def densityGuard(self):

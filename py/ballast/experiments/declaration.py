@@ -11,8 +11,9 @@ class Declaration:
     params      {name: Param}: the parameters, each declared once (units, ranges, defaults)
     check       check(values, text=False) -> the checked parameters (text=True: cells of a table)
     script      the command line that runs one realization, relative to the repository
-    sets        {'results': name, 'runId': name, 'sampleStore': name or None}: the parameters the study
-                sets for every run (where the run writes, its id, where prepared samples are stored)
+    sets        {'results': name, 'runId': name, 'sampleStore': name or None, 'resume': name (optional)}: the
+                parameters the study sets for a run (where the run writes, its id, where prepared samples are
+                stored, that it goes on with the killed run in its folder: given only then)
     sampleKey   sampleKey(p) -> the file name of the prepared sample the run p uses, or None: runs with the
                 same name share one sample (the study builds it once)
     cost        cost(p) -> a number that orders runs by their cost: the cheapest of a group builds the sample

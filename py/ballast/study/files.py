@@ -125,3 +125,25 @@ def saveFigure(fig, path, dpi=120):
     fig.savefig(buf, dpi=dpi, format='png')
     plt.close(fig)
     writeAtomic(path, buf.getvalue())
+
+
+def runStatus(runDir):
+    """run.json of a run's folder (what :meth:`ballast.experiments.base.Experiment.markRunning` and its saves
+    write) as a dict, or None when there is none or it does not parse."""
+    try:
+        with open(os.path.join(runDir, 'run.json')) as fh:
+            doc = json.load(fh)
+    except (OSError, ValueError):
+        return None
+    return doc if isinstance(doc, dict) else None
+
+
+def killedRunState(runDir):
+    """The state a killed run saved last in its folder, to go on from: run.json says 'running' and its
+    lastState is a file there. None otherwise (no folder, a finished run, no state saved yet). Whether the
+    run's process is gone is the caller's to know (a runner's lock, the pid in run.json)."""
+    doc = runStatus(runDir)
+    if doc is None or doc.get('status') != 'running' or not doc.get('lastState'):
+        return None
+    path = os.path.join(runDir, os.path.basename(doc['lastState']))
+    return path if os.path.isfile(path) else None

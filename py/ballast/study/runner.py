@@ -13,6 +13,10 @@ A run does not outlive its runner, however that ends (a SIGKILL from the OOM kil
 too): yade gets a parent-death signal and a watchdog kills what is left of its process group. A
 run of the study directory holds a lock there for the whole attempt: a runner started again beside
 a live one does not run the row a second time nor remove its work folder.
+
+A run killed or stopped after it saved a state (an experiment that declares ``resume``, the box test)
+is kept in <out>/resume/<run id>/ with its row; the next attempt of the same row goes on from that
+state in the same folder instead of starting again (:func:`keepToResume`, :func:`takeKept`).
 """
 import ctypes
 import fcntl
@@ -31,7 +35,7 @@ import threading
 import time
 import traceback
 
-from .files import codeSha1, moveSynced, readFiles, readSummary, sha1, writeAtomic
+from .files import codeSha1, killedRunState, moveSynced, readFiles, readSummary, sha1, writeAtomic
 from .table import TABLE_DIR
 
 # Set on Ctrl-C by the local executor: every running run kills its yade and returns.
@@ -107,6 +111,7 @@ def lastError(logPath):
     return lines[-1][:300] if lines else ''
 
 
+KEEP = 'resume'   # <out>/resume/<run id>/: a killed run's folder and row, to go on from (keepToResume)
 PROGRESS = re.compile(r'(\d+(?:\.\d+)?)% of (\w+)\s+ETA (\S+)')  # a progress line of experiments/phases.py
 
 
@@ -174,11 +179,46 @@ def releaseRow(lock):
     lock.close()
 
 
-def clearWork(work):
+def keepToResume(attempt, runId, keep):
+    """The run folder an attempt (a work folder) left, moved to keep/<run id>/run with the attempt's row.json
+    if its run saved a state to go on from (runner.takeKept); returns the state's name or None."""
+    runDir = os.path.join(attempt, 'results', runId)
+    state = killedRunState(runDir)
+    if state is None or not os.path.isfile(os.path.join(attempt, 'row.json')):
+        return None
+    kept = os.path.join(keep, runId)
+    shutil.rmtree(kept, ignore_errors=True)
+    os.makedirs(kept)
+    moveSynced(os.path.join(attempt, 'row.json'), os.path.join(kept, 'row.json'))
+    moveSynced(runDir, os.path.join(kept, 'run'))
+    return os.path.basename(state)
+
+
+def takeKept(keep, runId, row, results):
+    """The run kept in keep/<run id> (keepToResume) moved to results/<run id> if it was made from this row
+    (else removed: the row has changed); returns the name of the state it goes on from, or None."""
+    kept = os.path.join(keep, runId)
+    if not os.path.isdir(kept):
+        return None
+    try:
+        with open(os.path.join(kept, 'row.json')) as fh:
+            same = json.load(fh) == json.loads(json.dumps(row))
+    except (OSError, ValueError):
+        same = False
+    state = killedRunState(os.path.join(kept, 'run')) if same else None
+    if state is not None:
+        os.makedirs(results, exist_ok=True)
+        moveSynced(os.path.join(kept, 'run'), os.path.join(results, runId))
+    shutil.rmtree(kept, ignore_errors=True)
+    return os.path.basename(state) if state else None
+
+
+def clearWork(work, keep=None):
     """Clear a study's work directory as the study starts: remove what attempts of dead runners left,
-    keep the locks and the folders of the runs another runner still holds. Returns a journal record
-    of each attempt removed ({runId, status 'started', error}): it started, its end was never
-    recorded."""
+    keep the locks and the folders of the runs another runner still holds. With keep (a folder), a run
+    that saved a state to go on from is moved there first (keepToResume). Returns a journal record
+    of each attempt removed ({runId, status 'started', error, kept}): it started, its end was never
+    recorded; kept: the name of the state it goes on from, or None."""
     os.makedirs(work, exist_ok=True)
     names = os.listdir(work)
     held = set()
@@ -195,8 +235,10 @@ def clearWork(work):
         path = os.path.join(work, n)
         if os.path.isdir(path) and runId not in held:
             said = lastError(os.path.join(path, 'run.log'))
-            records.append({'runId': runId, 'status': 'started', 'error': 'no end recorded: its runner ended first '
-                            '(killed, or its machine went down)' + ('; its log ends: ' + said if said else '')})
+            state = keepToResume(path, runId, keep) if keep else None
+            records.append({'runId': runId, 'status': 'started', 'kept': state, 'error': 'no end recorded: its runner '
+                            'ended first (killed, or its machine went down)' + ('; its log ends: ' + said if said else '') + (
+                                '; kept to go on from its %s' % state if state else '')})
             shutil.rmtree(path, ignore_errors=True)
     return records
 
@@ -304,14 +346,15 @@ def runYade(cmd, env, cwd, logPath, deadline, stopped, keepFds=()):
         watchdog.wait()
 
 
-def command(spec, script, results, samples):
+def command(spec, script, results, samples, resume=False):
     """The yade command line of a run: yade [--nice=N] -n -x SCRIPT, then the parameters the study sets
     (spec['sets'], the declaration's): where the run writes, its id, where prepared samples are stored
-    (left out for an experiment without them)."""
+    (left out for an experiment without them), and with resume that it goes on with the killed run there."""
     sets = spec['sets']
     return [spec['yade']] + (['--nice=%d' % spec['nice']] if spec['nice'] is not None else []) + [
         '-n', '-x', script, '--' + sets['results'], results, '--' + sets['runId'], spec['runId']] + (
-        ['--' + sets['sampleStore'], samples] if sets.get('sampleStore') else [])
+        ['--' + sets['sampleStore'], samples] if sets.get('sampleStore') else []) + (
+        ['--' + sets['resume'], '1'] if resume else [])
 
 
 def runRow(spec, leader=None):
@@ -341,7 +384,11 @@ def runRow(spec, leader=None):
                 return res
         work, table, script, pdir, given = workDir(spec, shared, leader)
         results = os.path.join(work, 'results')
-        cmd = command(spec, script, results, pdir)
+        resumes = shared and spec['sets'].get('resume')
+        if resumes:
+            writeAtomic(os.path.join(work, 'row.json'), json.dumps(spec['row']))   # what a kept run was made from
+            res['resumedFrom'] = takeKept(os.path.join(spec['out'], KEEP), runId, spec['row'], results)
+        cmd = command(spec, script, results, pdir, resume=bool(res.get('resumedFrom')))
         env = dict(os.environ)
         env.update(spec['env'])
         # the row's relative paths start from the folder of the table the study read, not from this copy's
@@ -376,7 +423,11 @@ def runRow(spec, leader=None):
                 json.dump({'line': line, 'row': spec['row'], 'table': spec['tableName'], 'tableSha1': sha1(spec['tableText']),
                            'script': spec['scriptPath'], 'codeSha1': code, 'host': host,
                            'executor': spec['executor'], 'command': res['command'], 'started': started,
-                           'wallSeconds': finished - started}, fh, indent=1)
+                           'wallSeconds': finished - started, 'resumedFrom': res.get('resumedFrom')}, fh, indent=1)
+        if resumes and why == 'stopped':
+            state = keepToResume(work, runId, os.path.join(spec['out'], KEEP))
+            if state:
+                res['error'] += '; kept to go on from its %s' % state
         if shared:
             finalize(spec['out'], runId, res, runDir, logPath)
         else:

@@ -36,7 +36,7 @@ from ..params import ParamError
 from .files import codeSha1, readSummary, sha1, writeAtomic
 from .options import OPTIONS, StudyError, experimentDeclaration, optionValue
 from .records import hasRecord, keepRecord, recordPath, writeIndex
-from .runner import clearWork, failedLog, finalizeShipped, lastError, newestLog, runProgress
+from .runner import KEEP, clearWork, failedLog, finalizeShipped, lastError, newestLog, runProgress
 from .table import Table, resolvePaths, tableDir
 
 # yade-batch's !COLUMNS that are not environment variables of the run
@@ -170,7 +170,8 @@ class Study:
             raise StudyError('%s: finished run(s) in %s/runs were made from other values than the table now gives: %s. '
                              'Remove those run directories or choose another --out.' % (
                                  self.tablePath, self.out, '; '.join(stale[:5])))
-        left = clearWork(os.path.join(self.out, 'work'))
+        left = clearWork(os.path.join(self.out, 'work'),
+                         keep=os.path.join(self.out, KEEP) if self.declaration.sets.get('resume') else None)
         lineOf = {self.table.runId(n): n for n, _ in self.table.rows}
         with open(os.path.join(self.out, 'journal.jsonl'), 'a') as fh:
             for rec in left:
@@ -195,6 +196,7 @@ class Study:
         for n in self.lines:
             failed = os.path.isdir(os.path.join(self.out, 'failed', self.table.runId(n)))
             self.status[n] = {'status': 'finished' if self.finishedRow(n) is not None else ('failed' if failed else 'todo')}
+        self.kept = sum(1 for rec in left if rec['kept'])
         return len(left)
 
     def tasks(self, todo, executorName):
@@ -264,7 +266,8 @@ class Study:
             self.tablePath, len(self.lines), '' if len(self.lines) == len(self.table.rows) else ' (--lines)', nDone, len(todo),
             self.out))
         if cleaned:
-            self.say('removed %d unfinished attempt(s) left by an interrupted study; their runs are redone' % cleaned)
+            self.say('removed %d unfinished attempt(s) left by an interrupted study; their runs are redone%s' % (
+                cleaned, ', %d from the last state it saved (kept in %s/)' % (self.kept, KEEP) if self.kept else ''))
         old = {}
         for n in self.lines:
             made = (self.finishedRow(n) or {}).get('codeSha1')

@@ -11,7 +11,7 @@ DECLARATION = Declaration(
             '`loadFile`: read and checked with the parameters (the row of a fault named).',
             '`results` and the bed store (`bedDir`, default `<results>/beds`) are created and written to before the '
             'preparation.'],
-    check=check, script='scripts/box_test.py', sets={'results': 'results', 'runId': 'runId', 'sampleStore': 'bedDir'}, sampleKey=lambda p: bedKey(p)[1],
+    check=check, script='scripts/box_test.py', sets={'results': 'results', 'runId': 'runId', 'sampleStore': 'bedDir', 'resume': 'resume'}, sampleKey=lambda p: bedKey(p)[1],
     cost=lambda p: p['cycles'] * p.history().period / p.loadingTimeStep(),
     results=[('settlement', 'm'), ('resilient', 'm'), ('nCrushed', '-'), ('nAbraded', '-'), ('maxStressRatio', '-'),
              ('maxDamage', '-'), ('cpuSecondsPerCycle', 's'), ('cpuSeconds', 's')],

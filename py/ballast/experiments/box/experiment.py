@@ -23,7 +23,8 @@ from yade.wrapper import FrictMat, InterpolatingDirectedForceEngine
 
 from ... import runtime
 from ...engines import BallastAbrasionEngine, BallastCrushEngine
-from ...params import CYCLE_JUMP, ParamError, requireWritableDir, validate
+from ...params import CYCLE_JUMP, requireWritableDir, validate
+from ...study.files import writeAtomic
 from .. import chain, grains, preparation, timestep
 from ..base import Experiment
 from ..oedometer import scene
@@ -133,7 +134,7 @@ class BoxTest(Experiment):
     Parameters = BoxParameters
     # where and how it reports, and how its cycles are simulated (cycle jumping)
     # bedDir: a reopened run has its bed; where beds are stored (another machine's path) changes nothing in it
-    REOPEN_PARAMS = ('results', 'runId', 'progress', 'vtk', 'cycles', 'saveEvery', 'continueFrom',
+    REOPEN_PARAMS = ('results', 'runId', 'progress', 'vtk', 'cycles', 'saveEvery', 'continueFrom', 'resume',
                      'bedDir') + tuple(CYCLE_JUMP)
 
     def __init__(self, parameters=None, **params):
@@ -141,6 +142,7 @@ class BoxTest(Experiment):
         self.bedTop = self.porosity = self.bedFile = None
         self.nEscaped, self.nCrib, self.initial, self.gradings, self.frames = 0, 0, None, [], []
         self.onFloor = False   # the sleeper reached the box's floor: the run stops there
+        self.target = None     # the cycles done when the load() under way ends
         Experiment.__init__(self, parameters, **params)
 
     def pieces(self):
@@ -284,19 +286,25 @@ class BoxTest(Experiment):
             self.markRunning(continues=self.dir.previous)
             self.say('run %s goes on from %s -> %s' % (self.runId, self.dir.previous, self.out))
         self.syncJumping()
-        rec = self.recorder
-        target = self.cyclesDone() + n
+        self.target = self.cyclesDone() + n
+        return self.goOnToEnd()
+
+    def goOnToEnd(self):
+        """The cycles of the load() under way up to its target (saved with the state: a killed run resumed goes on to
+        it), then every output written and the state saved. Returns the summary."""
+        p, rec, target = self.p, self.recorder, self.target
         tEnd = rec.t0 + (target - rec.jumped) * rec.period
         if self.jumper is not None:
             self.jumper.target = target
         self.say('load: %d cycle(s) of %s, %.4g-%.4g N, %.3g s each, dt = %.3g s (%.3g steps a cycle)' % (
-            n, p.history().source, p.history().seat, p.history().peak, rec.period, O.dt, rec.period / O.dt))
-
-        self.runUntil(lambda: self.cyclesDone() >= target or self.onFloor, tEnd=tEnd + 2 * rec.period / p['samples'],
-                      phase='load', checkEvery=50, simSpan=tEnd - O.time, simStart=O.time,
-                      extra=lambda: 'cycle %d of %d, settlement %.2f mm, %d crushed, %d abraded' % (
-                          self.cyclesDone(), target, 1e3 * (rec.samples[-1][4] if rec.samples else 0),
-                          rec.samples[-1][6] if rec.samples else 0, rec.samples[-1][7] if rec.samples else 0))
+            target - self.cyclesDone(), p.history().source, p.history().seat, p.history().peak, rec.period, O.dt,
+            rec.period / O.dt))
+        if self.cyclesDone() < target:   # a run killed after its last cycle: its outputs only
+            self.runUntil(lambda: self.cyclesDone() >= target or self.onFloor, tEnd=tEnd + 2 * rec.period / p['samples'],
+                          phase='load', checkEvery=50, simSpan=tEnd - O.time, simStart=O.time,
+                          extra=lambda: 'cycle %d of %d, settlement %.2f mm, %d crushed, %d abraded' % (
+                              self.cyclesDone(), target, 1e3 * (rec.samples[-1][4] if rec.samples else 0),
+                              rec.samples[-1][6] if rec.samples else 0, rec.samples[-1][7] if rec.samples else 0))
         k = self.cyclesDone()
         self.grade(k)
         self.save(os.path.join(self.out, 'state-end.yade.gz'))
@@ -308,7 +316,11 @@ class BoxTest(Experiment):
 
     def run(self):
         """prepare() and load(); with continueFrom, the saved run reopened into this run's folder and `cycles`
-        more cycles of it (goOn). Returns the summary."""
+        more cycles of it (goOn); with resume, first the run killed in this run's folder taken to its end
+        (Experiment.resumeKilled). Returns the summary."""
+        resumed = self.resumeKilled()
+        if resumed is not None:
+            return resumed
         if self.p['continueFrom']:
             return self.goOn()
         return Experiment.run(self)
@@ -318,11 +330,24 @@ class BoxTest(Experiment):
         ParamError naming the first physics parameter that differs from the saved run's, before any step."""
         p = self.p
         saved = BoxTest.reopen(p['continueFrom'], **{k: p[k] for k in self.REOPEN_PARAMS})
-        for k in PARAMS:
-            if k not in self.REOPEN_PARAMS and saved.p[k] != p[k]:
-                raise ParamError(k, '%s: %s = %r is not allowed with continueFrom: the saved run has %s = %r' % (
-                    OWNER, k, p[k], k, saved.p[k]))
+        self.requireSamePhysics(saved, 'continueFrom')
         return saved.load(p['cycles'])
+
+    def resumed(self, state):
+        """Experiment.resumeKilled's last step: this run, reopened from `state` in the folder of its killed
+        process, cuts samples.csv back to the state's time (the rows after it are taken again) and goes on to the
+        target of the load() it was in (a state saved before that load() set one: `cycles` more)."""
+        path = os.path.join(self.out, 'samples.csv')
+        if os.path.exists(path):
+            t = O.time - self.recorder.t0
+            with open(path) as fh:
+                lines = fh.readlines()
+            writeAtomic(path, ''.join(lines[:1] + [l for l in lines[1:] if float(l.split(',', 1)[0]) < t]))
+        if self.target is None:
+            self.target = self.cyclesDone() + self.p['cycles']
+        self.say('resume: run %s goes on in %s from %s (cycle %d of %d)' % (
+            self.runId, self.out, os.path.basename(state), self.cyclesDone(), self.target))
+        return self.goOnToEnd()
 
     def summary(self):
         return outputs.summary(self)
@@ -332,7 +357,7 @@ class BoxTest(Experiment):
         return dict(self.baseState(), rig=runtime.ref(self.rig), recorder=runtime.ref(self.recorder),
                     jumper=runtime.ref(self.jumper),
                     bedTop=self.bedTop, porosity=self.porosity, nEscaped=self.nEscaped, nCrib=self.nCrib,
-                    bedFile=self.bedFile, onFloor=self.onFloor,
+                    bedFile=self.bedFile, onFloor=self.onFloor, target=self.target,
                     initial=self.initial,
                     gradings=self.gradings, frames=self.frames)
 
@@ -346,4 +371,5 @@ class BoxTest(Experiment):
             setattr(exp, k, s[k])
         exp.nCrib = s.get('nCrib', 0)   # states saved before crib ballast existed have none
         exp.onFloor = s.get('onFloor', False)
+        exp.target = s.get('target')   # none in states saved before a killed run could resume
         return exp

@@ -71,6 +71,9 @@ PARAMS = dict({
     'saveEvery': Param(0, 'cycles', 'besides the states at the start and the end, save the state every saveEvery cycles '
                        '(state-cycle<N>.yade.gz: BoxTest.reopen goes on from it; 0 = only those two)', intBetween(0, 10 ** 9),
                        'an integer >= 0'),
+    'resume': Param(False, '-', 'go on with the run killed in <results>/<runId> (run.json "running") from the last state '
+                    'it saved (saveEvery), in its folder, to the end it was going to; with no such run, start afresh '
+                    '(docs/box.md, "A killed run goes on")', boolean, '0 or 1', flag),
     'vtk': Param(False, '-', 'VTK frames (grains, contacts, the sleeper and the box) at the cycles the grading is read '
                  '(boxes.pvd)', boolean, '0 or 1', flag),
 }, **{k: OEDOMETER[k] for k in (
@@ -152,6 +155,8 @@ class BoxParameters(Parameters):
             bad('sleeperGap', 'leaves no sleeper in a box of width %g m' % p['boxWidth'])
         if not p['loadFile'] and p['seatLoad'] >= p['peakLoad']:
             bad('seatLoad', 'must be smaller than peakLoad = %g N' % p['peakLoad'])
+        if p['resume'] and not p['runId']:
+            bad('resume', 'give runId: the run that goes on is the one in <results>/<runId>')
         if p['continueFrom'] and not os.path.isfile(p['continueFrom']):
             bad('continueFrom', 'no such state file')
         if p['loadFile']:

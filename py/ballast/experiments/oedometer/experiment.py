@@ -24,7 +24,6 @@ summary.json) gets its outputs up to its last state back with ``Oedometer.rebuil
 (``yade -x -n scripts/oedometer.py --rebuild RUNDIR``): into a new folder <run id>-2.
 """
 import glob
-import json
 import math
 import os
 
@@ -35,7 +34,7 @@ from ... import grading, runtime
 from ...geometry import sphereVolume
 from ...names import fmtTime
 from ...params import CYCLE_JUMP, validate
-from ...study.files import writeAtomic
+from ...study.files import runStatus, writeAtomic
 from .. import chain, grains
 from .. import timestep
 from ..base import Experiment
@@ -423,11 +422,7 @@ class Oedometer(Experiment):
 def lastState(runDir):
     """The last state a run saved: run.json's lastState, else state-end, else the saveEvery state of the
     highest iteration, else state-start."""
-    try:
-        with open(os.path.join(runDir, 'run.json')) as fh:
-            named = [json.load(fh).get('lastState') or '']
-    except (OSError, ValueError):
-        named = []
+    named = [(runStatus(runDir) or {}).get('lastState') or '']
     iters = sorted(os.path.basename(f) for f in glob.glob(os.path.join(runDir, 'state-iter*.yade.gz')))
     for name in named + ['state-end.yade.gz'] + iters[::-1] + ['state-start.yade.gz']:
         if name and os.path.isfile(os.path.join(runDir, name)):
