@@ -1,5 +1,5 @@
 """Tests of ballast.study.files: atomic writes, and the sha1 that identifies the code of a run (the
-script and the installed ballast package); strict JSON."""
+script and the installed ballast package); strict JSON; the state a killed run left."""
 import json
 import os
 
@@ -58,3 +58,18 @@ def test_strict_json_writes_what_is_not_a_finite_number_as_null():
     assert json.loads(text, parse_constant=lambda c: pytest.fail(c)) == {
         'a': None, 'b': [1.5, None, [None, 2]], 'c': {'d': True, 'e': 3, 'f': 'x'}}
     assert 'NaN' in json.dumps(value)   # what Python's json writes without it
+
+
+def test_a_killed_run_state_is_the_last_state_of_a_run_still_marked_running(tmp_path):
+    d = str(tmp_path)
+    assert files.runStatus(d) is None and files.killedRunState(d) is None and files.killedRunState(str(tmp_path / 'none')) is None
+    (tmp_path / 'run.json').write_text('{"status": "runn')   # cut short
+    assert files.runStatus(d) is None
+    (tmp_path / 'run.json').write_text('{"status": "running"}')   # no state saved yet
+    assert files.runStatus(d) == {'status': 'running'} and files.killedRunState(d) is None
+    (tmp_path / 'run.json').write_text('{"status": "running", "lastState": "state-cycle0000050.yade.gz"}')
+    assert files.killedRunState(d) is None   # named, not there
+    (tmp_path / 'state-cycle0000050.yade.gz').write_bytes(b'x')
+    assert files.killedRunState(d) == os.path.join(d, 'state-cycle0000050.yade.gz')
+    (tmp_path / 'run.json').write_text('{"status": "finished", "lastState": "state-cycle0000050.yade.gz"}')
+    assert files.killedRunState(d) is None
