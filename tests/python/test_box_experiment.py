@@ -158,6 +158,7 @@ def test_a_saved_state_reopens_and_goes_on(run, tmp_path):
     old = pd.read_csv(os.path.join(test.out, 'cycles.csv'))
     assert list(cyc.cycle) == [1, 2, 3, 4] and s2['cycles'] == 4
     pd.testing.assert_frame_equal(cyc.iloc[:3].drop(columns='cpuSeconds'), old.drop(columns='cpuSeconds'))
+    assert cyc.cpuSeconds.iloc[3] > 0   # counted from the restore (this process's clock)
     assert s2['nCrushed'] >= s['nCrushed'] and abs(s2['massLedgerError']) <= 1e-12 * s2['massInitial']
 
 
@@ -207,9 +208,11 @@ def test_a_killed_run_resumed_goes_on_in_its_folder_to_its_end(run, tmp_path):
     s2 = BoxTest(results=str(tmp_path), runId=test.runId, resume=True, vtk=True, saveEvery=2, **SMALL).run()
     assert sorted(os.listdir(str(tmp_path))) == [test.runId]   # no new folder
     old = pd.read_csv(os.path.join(test.out, 'cycles.csv')).drop(columns='cpuSeconds')
-    new = pd.read_csv(os.path.join(folder, 'cycles.csv')).drop(columns='cpuSeconds')
+    new = pd.read_csv(os.path.join(folder, 'cycles.csv'))
+    new, newCpu = new.drop(columns='cpuSeconds'), new.cpuSeconds
     assert list(new.cycle) == [1, 2, 3] and s2['cycles'] == 3 and s2['params']['resume'] is True
     pd.testing.assert_frame_equal(old.iloc[:2], new.iloc[:2])
+    assert newCpu.iloc[2] > 0
     a, b = (pd.read_csv(os.path.join(d, 'samples.csv')) for d in (test.out, folder))
     assert len(b) == len(a) and np.allclose(b.t, a.t, rtol=0, atol=1e-6)
     assert (np.diff(b.t) > 0).all()

@@ -59,6 +59,12 @@ class Recorder:
     def state(self):
         return {k: getattr(self, k) for k in ('sleeper', 'z0', 't0', 'period', 'samples', 'cycles', 'start', 'jumped')}
 
+    def restored(self):
+        """After a restore: the open cycle's CPU counted from here (a process's clock does not carry over; it was
+        left out, NaN, in the first cycle of every slice and reopened run)."""
+        if self.start is not None:
+            self.cpu = time.process_time()
+
     @classmethod
     def fromState(cls, s, ref=None):
         r = cls()
