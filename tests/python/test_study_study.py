@@ -6,13 +6,14 @@ import csv
 import json
 import os
 import signal
+import shutil
 import threading
 
 import pytest
 
 from ballast.experiments import Declaration, declaration
 from ballast.study import LocalExecutor, Study, StudyData, runner, status
-from ballast.study.files import codeSha1
+from ballast.study.files import codeSha1, writeAtomic
 from ballast.study.options import StudyError
 from study_fakes import ctrlC, writeFakeYade  # noqa: F401 (ctrlC is a fixture)
 
@@ -193,6 +194,13 @@ def test_a_cut_summary_is_not_finished_for_the_study_nor_the_aggregation(setup, 
     capsys.readouterr()
     status(out)
     assert '3 rows: 1 finished, 2 todo' in capsys.readouterr().out
+    kept = os.path.join(out, 'resume', IDS[0], 'run')   # as the runner keeps a killed run that saved a state
+    os.makedirs(kept)
+    writeAtomic(os.path.join(kept, 'run.json'), '{"status": "running", "lastState": "state-1.gz"}')
+    writeAtomic(os.path.join(kept, 'state-1.gz'), 'saved')
+    status(out)
+    assert 'kept: %s goes on from its state-1.gz at its next start' % IDS[0] in capsys.readouterr().out
+    shutil.rmtree(os.path.join(out, 'resume'))
     assert study(setup, lines='2').run(LocalExecutor(1)) == 0  # run again: the cut one replaced
     with open(path) as fh:
         assert json.load(fh)['peakForce'] == 2001.0
