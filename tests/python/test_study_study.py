@@ -5,8 +5,8 @@ finished run, for the study and the aggregation alike."""
 import csv
 import json
 import os
-import signal
 import shutil
+import signal
 import threading
 
 import pytest
