@@ -18,9 +18,9 @@ is a killed run.
 
 A subclass gives ``NAME``, ``Parameters`` (its Parameters class), ``REOPEN_PARAMS`` (what a reopened
 run may change: where and how it reports, not the physics), ``prepare()``, ``summary()``, and its
-state (``state()``, ``fromState()``); its pieces are registered objects of their own. A cyclic experiment
-declares ``resume`` goes on with a killed run (:meth:`Experiment.resumeKilled`) and gives ``resumed(state)``. One that
-offers cycle jumping (``jump``, docs/cycles.md) with :meth:`startJumping` when its cycles start, a
+state (``state()``, ``fromState()``); its pieces are registered objects of their own. One that declares
+``resume`` goes on with a killed run (:meth:`Experiment.resumeKilled`) and gives ``resumed(state)``. A cyclic
+experiment offers cycle jumping (``jump``, docs/cycles.md) with :meth:`startJumping` when its cycles start, a
 ``jumper`` piece, :meth:`cycleClosed` at each simulated cycle's end and :meth:`jumped` if it counts cycles.
 """
 import gzip
