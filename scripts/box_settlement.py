@@ -113,6 +113,8 @@ def main(argv=None):
                   span(r.grainsCycle1, '%d'), span(r.grainsLast, '%d'), span(r.cpuPerCycle, '%.1f'),
                   span(r.cpuPerRealization / 3600, '%.1f'), span(r.timeStep, '%.3g'),
                   span(r.stepsPerCycle, '%.0f')))
+    for r in runs[runs.avalancheCrushes.notna()].itertuples():
+        print('%s: %s, most crushes in cycle %d (%d)' % (r.study, r.runId, r.avalancheCycle, r.avalancheCrushes))
     for study, f in fits.items():
         for rid, n in f['tippedAt'].items():
             print('%s: %s tips from cycle %d (read apart)' % (study, rid, n))

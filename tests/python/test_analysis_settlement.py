@@ -236,10 +236,14 @@ def test_each_realization_reports_what_it_broke_and_cost_over_all_its_slices(tmp
     assert one.cpuPerCycle == pytest.approx((4 * 2 + 3 * 4) / 7, rel=1e-12)   # over the 7 cycles with a CPU time
     assert one.cpuPerRealization == pytest.approx(8 * (4 * 2 + 3 * 4) / 7, rel=1e-12)
     assert one.maxDamage == pytest.approx(0.5) and one.timeStep == 1e-6 and r.loc['s2-c8'].crushes == 0
+    assert (one.avalancheCycle, one.avalancheCrushes) == (2, 1)   # the first of the two cycles with one crush each
+    assert math.isnan(r.loc['s2-c8'].avalancheCycle) and math.isnan(r.loc['s2-c8'].avalancheCrushes)
     assert boxSettlement()([root, '--out', str(tmp_path / 'out')]) == 0
     written = __import__('pandas').read_csv(str(tmp_path / 'out' / 'runs.csv'))
     assert list(written.runId) == ['s1-c8', 's2-c8'] and 'tippedAt' in written
-    assert 'crushes 0-2, abrasions 0, largest fatigue damage 0.5' in capsys.readouterr().out
+    said = capsys.readouterr().out
+    assert 'crushes 0-2, abrasions 0, largest fatigue damage 0.5' in said and 's1-c8, most crushes in cycle 2 (1)' in said
+    assert 's2-c8, most crushes' not in said
 
 
 def test_the_axes_fit_the_data_not_a_law_that_fits_it_badly(tmp_path, monkeypatch):

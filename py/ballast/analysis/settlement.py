@@ -84,18 +84,24 @@ def realizations(paths, by=()):
     seed, cycles; over all its cycles (the last slice's cycles.csv holds the earlier ones) the crushes and
     abrasions, the largest fatigue damage and stress ratio, the grains after cycle 1 and at the end, and the CPU
     seconds per cycle (over the cycles that have it: a continued slice's first has none) and per realization (that
-    mean times its cycles); from its last slice's summary.json the step (timeStep, its dt [s]) and the steps per
-    cycle. NaN where the records have no such column (records of before a column was written)."""
+    mean times its cycles); the cycle in which the most grains crushed (avalancheCycle, the first of equals) and how
+    many (avalancheCrushes), NaN when none crushed: where a bed collapses, the cycle variants move; from its last
+    slice's summary.json the step (timeStep, its dt [s]) and the steps per cycle. NaN where the records have no such
+    column (records of before a column was written)."""
     rows = []
     for label, run, c in realizationRuns(paths, by):
         def over(name, how):
             return float(how(c[name].to_numpy())) if name in c else math.nan
         s = run.summary or {}
+        most = int(c['crushes'].to_numpy().argmax()) if 'crushes' in c and c['crushes'].max() > 0 else None
         rows.append({'study': label, 'runId': run.runId, 'seed': run.params.get('seed'), 'cycles': int(c['cycle'].max()),
                      'crushes': over('crushes', np.sum), 'abrasions': over('abrasions', np.sum),
                      'maxDamage': over('maxDamage', np.max), 'maxStressRatio': over('maxStressRatio', np.max),
                      'grainsCycle1': over('nGrains', lambda v: v[0]), 'grainsLast': over('nGrains', lambda v: v[-1]),
-                     'cpuPerCycle': over('cpuSeconds', np.nanmean), 'timeStep': float(s.get('dt', math.nan)),
+                     'cpuPerCycle': over('cpuSeconds', np.nanmean),
+                     'avalancheCycle': math.nan if most is None else int(c['cycle'].iloc[most]),
+                     'avalancheCrushes': math.nan if most is None else int(c['crushes'].iloc[most]),
+                     'timeStep': float(s.get('dt', math.nan)),
                      'stepsPerCycle': float(s.get('stepsPerCycle', math.nan))})
     frame = pd.DataFrame(rows)
     if len(frame):
