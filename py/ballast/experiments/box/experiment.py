@@ -24,7 +24,6 @@ from yade.wrapper import FrictMat, InterpolatingDirectedForceEngine
 from ... import runtime
 from ...engines import BallastAbrasionEngine, BallastCrushEngine
 from ...params import CYCLE_JUMP, requireWritableDir, validate
-from ...study.files import writeAtomic
 from .. import chain, grains, preparation, timestep
 from ..base import Experiment
 from ..oedometer import scene
@@ -343,12 +342,7 @@ class BoxTest(Experiment):
         """Experiment.resumeKilled's last step: this run, reopened from `state` in the folder of its killed
         process, cuts samples.csv back to the state's time (the rows after it are taken again) and goes on to the
         target of the load() it was in (a state saved before that load() set one: `cycles` more)."""
-        path = os.path.join(self.out, 'samples.csv')
-        if os.path.exists(path):
-            t = O.time - self.recorder.t0
-            with open(path) as fh:
-                lines = fh.readlines()
-            writeAtomic(path, ''.join(lines[:1] + [l for l in lines[1:] if float(l.split(',', 1)[0]) < t]))
+        outputs.cutSamples(self, O.time - self.recorder.t0)
         if self.target is None:
             self.target = self.cyclesDone() + self.p['cycles']
         self.say('resume: run %s goes on in %s from %s (cycle %d of %d)' % (

@@ -144,6 +144,16 @@ def appendSample(exp, row):
         fh.write(','.join('%.9g' % v for v in row) + '\n')
 
 
+def cutSamples(exp, t):
+    """samples.csv back to its rows taken before `t` [s since cycling began]: a killed run resumed from a state saved
+    at t takes the later ones again."""
+    path = os.path.join(exp.out, 'samples.csv')
+    if os.path.exists(path):
+        with open(path) as fh:
+            lines = fh.readlines()
+        writeAtomic(path, ''.join(lines[:1] + [l for l in lines[1:] if float(l.split(',', 1)[0]) < t]))
+
+
 def writeCycles(exp):
     writeAtomic(os.path.join(exp.out, 'cycles.csv'), cycleTable(exp).to_csv(index=False, float_format='%.9g'))
 
