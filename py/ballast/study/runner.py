@@ -194,6 +194,11 @@ def keepToResume(attempt, runId, keep):
     return os.path.basename(state)
 
 
+def keptState(keep, runId):
+    """The state the run kept in keep/<run id> (keepToResume) goes on from, or None."""
+    return killedRunState(os.path.join(keep, runId, 'run'))
+
+
 def takeKept(keep, runId, row, results):
     """The run kept in keep/<run id> (keepToResume) moved to results/<run id> if it was made from this row
     (else removed: the row has changed); returns the name of the state it goes on from, or None."""
@@ -205,7 +210,7 @@ def takeKept(keep, runId, row, results):
             same = json.load(fh) == json.loads(json.dumps(row))
     except (OSError, ValueError):
         same = False
-    state = killedRunState(os.path.join(kept, 'run')) if same else None
+    state = keptState(keep, runId) if same else None
     if state is not None:
         os.makedirs(results, exist_ok=True)
         moveSynced(os.path.join(kept, 'run'), os.path.join(results, runId))

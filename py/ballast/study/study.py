@@ -33,10 +33,10 @@ import uuid
 
 from ..names import fmtTime
 from ..params import ParamError
-from .files import codeSha1, killedRunState, readSummary, sha1, writeAtomic
+from .files import codeSha1, readSummary, sha1, writeAtomic
 from .options import OPTIONS, StudyError, experimentDeclaration, optionValue
 from .records import hasRecord, keepRecord, recordPath, writeIndex
-from .runner import KEEP, clearWork, failedLog, finalizeShipped, lastError, newestLog, runProgress
+from .runner import KEEP, clearWork, failedLog, finalizeShipped, keptState, lastError, newestLog, runProgress
 from .table import Table, resolvePaths, tableDir
 
 # yade-batch's !COLUMNS that are not environment variables of the run
@@ -426,7 +426,7 @@ def status(out):
             print('  started: %s: %s, its log written %s ago (%s)' % (
                 rid, runProgress(os.path.join(out, 'work'), rid) or 'no progress line yet',
                 fmtTime(max(0, time.time() - os.path.getmtime(log))), log))
-        state = killedRunState(os.path.join(out, KEEP, rid, 'run'))
+        state = keptState(os.path.join(out, KEEP), rid)
         if state is not None:
             print('  kept: %s goes on from its %s at its next start (%s)' % (
                 rid, os.path.basename(state), os.path.join(out, KEEP, rid)))
