@@ -180,6 +180,6 @@ def writeIndex(records, info):
     """records/study.json: the study's description as the aggregation reads it, without the paths of
     the machine that ran it."""
     os.makedirs(records, exist_ok=True)
-    keep = {k: v for k, v in info.items() if k not in ('script', 'packings')}
+    keep = {k: v for k, v in info.items() if k not in ('script', 'packings', 'lines')}  # lines: of one start
     keep['table'] = os.path.basename(info['table'])
     writeAtomic(os.path.join(records, 'study.json'), json.dumps(keep, indent=1))

@@ -183,7 +183,8 @@ class Study:
         info = {'experiment': self.declaration.name, 'table': os.path.abspath(self.tablePath),
                 'tableSha1': sha1(self.table.text), 'script': self.script,
                 'codeSha1': self.codeSha1, 'packings': self.packings, 'columns': self.table.columns,
-                'rows': [{'line': n, 'runId': self.table.runId(n), 'row': r} for n, r in self.table.rows]}
+                'rows': [{'line': n, 'runId': self.table.runId(n), 'row': r} for n, r in self.table.rows],
+                'lines': list(self.lines)}   # the rows this start runs (--lines): what status counts as to run
         writeAtomic(os.path.join(self.out, 'study.json'), json.dumps(info, indent=1))
         if self.records:
             writeIndex(self.records, info)
@@ -398,7 +399,7 @@ class Progress:
 
 def status(out):
     """Print what a study directory holds: finished, failed (with the line of the log that says
-    why) and still to run."""
+    why), still to run, and not selected (outside the --lines of its last start)."""
     out = os.path.abspath(out)
     path = os.path.join(out, 'study.json')
     if not os.path.exists(path):
@@ -406,6 +407,7 @@ def status(out):
     with open(path) as fh:
         info = json.load(fh)
     counts = {}
+    selected = set(info.get('lines', [r['line'] for r in info['rows']]))  # older folders: every row
     for r in info['rows']:
         rid = r['runId']
         if readSummary(os.path.join(out, 'runs', rid))[0] is not None:
@@ -413,7 +415,7 @@ def status(out):
         elif os.path.isdir(os.path.join(out, 'failed', rid)) or failedLog(os.path.join(out, 'logs', rid + '.log')):
             st = 'failed'
         else:
-            st = 'todo'
+            st = 'todo' if r['line'] in selected else 'not selected'
         counts.setdefault(st, []).append(rid)
     print('%s (%s): %d rows: %s' % (out, info['table'], len(info['rows']),
                                     ', '.join('%d %s' % (len(v), k) for k, v in sorted(counts.items()))))
