@@ -146,3 +146,26 @@ def test_a_run_without_jumping_goes_on_with_it_in_a_slice(tmp_path, beds):
     cyc = pd.read_csv(os.path.join(str(tmp_path), s['runId'], 'cycles.csv'))
     assert s['cycles'] == 15 and s['jumps'] >= 1 and cyc.cycle.iloc[-1] == 15 and cyc.jumped.iloc[-1] > 0
     assert list(cyc.cycle[:3]) == [1, 2, 3]                     # the saved run's cycles, simulated without jumps
+
+
+def test_a_killed_run_resumed_after_a_jump_forgets_the_later_jumps_of_the_killed_process(jumped, tmp_path, beds):
+    """resume with cycle jumping: the run killed after its last jump's state, as if its process had jumped once more
+    before it died (a row in jumps.csv, that jump's states on disk), goes on from that state: jumps.csv back to the
+    state's jumps (and those taken since), the later jump's states gone, the run at its cycles."""
+    from test_box_experiment import killedCopy
+    test, s = jumped
+    jumps = pd.read_csv(os.path.join(test.out, 'jumps.csv'))
+    folder = killedCopy(test, str(tmp_path), jumps.stateAfter.iloc[-1])
+    k = len(jumps) + 1
+    ghost = ['state-jump%04d-%s.yade.gz' % (k, w) for w in ('before', 'after')]
+    for name in ghost:
+        with open(os.path.join(folder, name), 'w') as fh:
+            fh.write('a state of the killed process')
+    pd.concat([jumps, jumps.iloc[[-1]].assign(stateBefore=ghost[0], stateAfter=ghost[1])]).to_csv(
+        os.path.join(folder, 'jumps.csv'), index=False)
+    s2 = BoxTest(results=str(tmp_path), runId=test.runId, resume=True, bedDir=beds, **WEAK, **JUMP).run()
+    got = pd.read_csv(os.path.join(folder, 'jumps.csv'))
+    assert s2['cycles'] == s['cycles'] and len(got) == s2['jumps'] >= len(jumps)
+    pd.testing.assert_frame_equal(got.iloc[:len(jumps)], jumps)
+    onDisk = [f for f in os.listdir(folder) if f.startswith('state-jump')]
+    assert sorted(onDisk) == sorted(set(got.stateBefore) | set(got.stateAfter))

@@ -27,6 +27,7 @@ import gzip
 import json
 import os
 import shutil
+import re
 import socket
 import time
 import zlib
@@ -41,6 +42,9 @@ from ..names import runDirName
 from ..params import CRUSH, ParamError, requireWritableDir
 from ..study.files import killedRunState, runStatus, syncDir, writeAtomic
 from .phases import Phases
+
+JUMP_STATE = 'state-jump%04d-%s.yade.gz'   # the states around jump k: 'before' and 'after' it
+JUMP_STATE_NAME = re.compile(r'state-jump(\d+)-(?:before|after)\.yade\.gz')   # the same names, read back
 
 STATUS_FILE = 'run.json'
 JUMPER = 'cycleJumper'   # the label of the callback that makes a planned jump
@@ -277,7 +281,7 @@ class Experiment:
         """The state before, the jump, the state after (state-jump<K>-before/after.yade.gz), jumps.csv."""
         chain.engine(JUMPER).dead = True
         k = len(self.jumper.jumps) + 1
-        before, after = 'state-jump%04d-before.yade.gz' % k, 'state-jump%04d-after.yade.gz' % k
+        before, after = JUMP_STATE % (k, 'before'), JUMP_STATE % (k, 'after')
         self.save(os.path.join(self.out, before))
         e = self.jumper.apply(chain.engine('crush'), before, after)
         self.jumped(e['cycles'])
@@ -287,6 +291,17 @@ class Experiment:
         self.jumper.writeLog(os.path.join(self.out, 'jumps.csv'))
         self.say('jump %d: cycles %d -> %d (bound: %s), largest damage rate %.3g a cycle, settlement %+.4f mm '
                  'extrapolated' % (k, e['cycle'], e['to'], e['limit'], e['maxRate'], 1e3 * e['settlementJumped']))
+
+    def cutJumps(self):
+        """A killed run resumed: jumps.csv back to the jumps of the state it goes on from, and the states the killed
+        process saved around later jumps removed (those jumps are taken again under the same numbers, or not)."""
+        if self.jumper is None:
+            return
+        self.jumper.writeLog(os.path.join(self.out, 'jumps.csv'))
+        for name in os.listdir(self.out):
+            m = JUMP_STATE_NAME.fullmatch(name)
+            if m and int(m.group(1)) > len(self.jumper.jumps):
+                os.remove(os.path.join(self.out, name))
 
     def forgetJumpStates(self, jump):
         """Remove the states this run saved around an earlier jump (jumpStates 'last') and their names from its log
@@ -422,6 +437,7 @@ class Experiment:
         self.requireSamePhysics(exp, 'resume (the killed run has other values)')
         exp.dir.goOnIn(folder)
         exp.markRunning(resumedFrom=os.path.basename(state))
+        exp.cutJumps()
         return exp.resumed(state)
 
     # ------------------------------------------------------------------ density scaling (experiments.timestep)
