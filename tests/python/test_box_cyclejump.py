@@ -1,7 +1,8 @@
 """Cycle jumping in the box test (docs/cycles.md), on the small box of test_box_experiment.py made weak enough for
 fatigue damage to grow every cycle without a crush (ft0 8e4 Pa m, fatigueExponent 10): the jumps and their
 records, the cycle count with the jumped cycles, each jump's damage within its bound, the states around a jump
-reopen and go on, and a run whose jumps are never allowed is the run without jumping, bit for bit."""
+reopen and go on (a killed run too, resumed), and a run whose jumps are never allowed is the run without jumping,
+bit for bit."""
 import os
 
 import numpy as np
@@ -152,12 +153,13 @@ def test_a_killed_run_resumed_after_a_jump_forgets_the_later_jumps_of_the_killed
     """resume with cycle jumping: the run killed after its last jump's state, as if its process had jumped once more
     before it died (a row in jumps.csv, that jump's states on disk), goes on from that state: jumps.csv back to the
     state's jumps (and those taken since), the later jump's states gone, the run at its cycles."""
+    from ballast.experiments.base import JUMP_STATE
     from test_box_experiment import killedCopy
     test, s = jumped
     jumps = pd.read_csv(os.path.join(test.out, 'jumps.csv'))
     folder = killedCopy(test, str(tmp_path), jumps.stateAfter.iloc[-1])
     k = len(jumps) + 1
-    ghost = ['state-jump%04d-%s.yade.gz' % (k, w) for w in ('before', 'after')]
+    ghost = [JUMP_STATE % (k, w) for w in ('before', 'after')]
     for name in ghost:
         with open(os.path.join(folder, name), 'w') as fh:
             fh.write('a state of the killed process')

@@ -26,8 +26,8 @@ experiment offers cycle jumping (``jump``, docs/cycles.md) with :meth:`startJump
 import gzip
 import json
 import os
-import shutil
 import re
+import shutil
 import socket
 import time
 import zlib
