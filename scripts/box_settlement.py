@@ -9,13 +9,13 @@ docs/box.md, "The study"):
 
 writes settlement.csv (every run's curve), runs.csv (per realization what it broke and cost: crushes, abrasions,
 largest fatigue damage and stress ratio, grains, CPU per cycle and per realization, step, the cycle it tips from),
-settlement.json (per study: the mean curve's and every run's logarithmic and power laws with R^2) and
-settlement.png; with --reference, all three over the cycles the other studies cover, and each other study's runs
-against the reference's of the same seed at the cycles --at: settlement-paired.csv (per seed and cycle) and
-settlement-paired.json (per cycle: the mean difference with its 95 % interval, the mean ratio). --tipping reads
-apart the realizations whose sleeper rose back by more than that many mm above its deepest settlement (it tips or
-rocks instead of settling), naming the cycle it did; --by splits a study's runs into its variants (rows differing in
-those parameters), each read as a study."""
+settlement.json (per study: the mean curve's and every run's logarithmic and power laws with R^2) and settlement.png
+(a dot on each run at the cycle most of its grains crushed in); with --reference, all three over the cycles the
+other studies cover, and each other study's runs against the reference's of the same seed at the cycles --at:
+settlement-paired.csv (per seed and cycle) and settlement-paired.json (per cycle: the mean difference with its 95 %
+interval, the mean ratio). --tipping reads apart the realizations whose sleeper rose back by more than that many mm
+above its deepest settlement (it tips or rocks instead of settling), naming the cycle it did; --by splits a study's
+runs into its variants (rows differing in those parameters), each read as a study."""
 import argparse
 import json
 import os
@@ -123,7 +123,8 @@ def main(argv=None):
             study, f['runs'], f['cycles'], ' (read apart: %s)' % ', '.join(f['apart']) if f['apart'] else '',
             1e3 * f['settlementFirst'], 1e3 * f['settlementLast'], f['cycles'],
             ', a + b ln N with b = %.4g mm (R^2 %.3f)' % (1e3 * law['b'], law['r2']) if law else ''))
-    print(settlement.figure(frame, fits, os.path.join(a.out, 'settlement.png')))
+    print(settlement.figure(frame, fits, os.path.join(a.out, 'settlement.png'),
+                            marks=runs.dropna(subset=['avalancheCycle']).set_index('runId').avalancheCycle.to_dict()))
     return 0
 
 

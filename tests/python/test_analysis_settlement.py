@@ -67,13 +67,24 @@ def test_a_realization_run_in_slices_counts_once_as_its_last_slice(tmp_path):
     assert f['runs'] == 2 and f['cycles'] == 8 and f['settlementLast'] == pytest.approx(1e-4 * (2 + 8), rel=1e-12)
 
 
-def drawn(monkeypatch, frame, fits, tmp_path):
-    """The panels settlement.figure draws (its figure caught where it would be saved)."""
+def caught(monkeypatch):
+    """The figures settlement.figure draws from now on, caught where they would be saved."""
     import ballast.study.files
-    caught = []
-    monkeypatch.setattr(ballast.study.files, 'saveFigure', lambda fig, path: caught.append(fig))
-    settlement.figure(frame, fits, str(tmp_path / 'caught.png'))
-    return caught[0].axes
+    figures = []
+    monkeypatch.setattr(ballast.study.files, 'saveFigure', lambda fig, path: figures.append(fig))
+    return figures
+
+
+def drawn(monkeypatch, frame, fits, tmp_path, marks=None):
+    """The panels settlement.figure draws."""
+    figures = caught(monkeypatch)
+    settlement.figure(frame, fits, str(tmp_path / 'caught.png'), marks=marks)
+    return figures[0].axes
+
+
+def dots(ax):
+    """(cycle, settlement [mm]) of every dot drawn on the panel `ax`."""
+    return [(x, y) for l in ax.get_lines() if l.get_marker() == 'o' for x, y in zip(l.get_xdata(), l.get_ydata())]
 
 
 def test_a_realization_read_apart_is_fitted_and_drawn_but_left_out_of_the_mean(tmp_path, monkeypatch):
@@ -214,7 +225,7 @@ def test_the_variants_of_one_study_are_studies_of_their_own(tmp_path, capsys):
         assert json.load(fh)[first + '[fatigue=1 keep=none]']['cycles'] == 20   # not cut to nothing
 
 
-def test_each_realization_reports_what_it_broke_and_cost_over_all_its_slices(tmp_path, capsys):
+def test_each_realization_reports_what_it_broke_and_cost_over_all_its_slices(tmp_path, capsys, monkeypatch):
     # seed 1 in two slices (the second's cycles.csv holds cycles 1-8, its cycle 5 without CPU as a resumed slice's
     # first), seed 2 in one; crushes 1 in cycles 2 and 6 of seed 1: 2 in all, grains 10 -> 14
     root = study(str(tmp_path / 'box'), {'s1-c4': (1, [1e-4] * 4), 's1-c8': (1, [1e-4] * 8), 's2-c8': (2, [2e-4] * 8)},
@@ -238,7 +249,9 @@ def test_each_realization_reports_what_it_broke_and_cost_over_all_its_slices(tmp
     assert one.maxDamage == pytest.approx(0.5) and one.timeStep == 1e-6 and r.loc['s2-c8'].crushes == 0
     assert (one.avalancheCycle, one.avalancheCrushes) == (2, 1)   # the first of the two cycles with one crush each
     assert math.isnan(r.loc['s2-c8'].avalancheCycle) and math.isnan(r.loc['s2-c8'].avalancheCrushes)
+    figures = caught(monkeypatch)
     assert boxSettlement()([root, '--out', str(tmp_path / 'out')]) == 0
+    assert dots(figures[0].axes[0]) == [(2, pytest.approx(0.1, rel=1e-12))]   # seed 1's cycle of most crushes only
     written = __import__('pandas').read_csv(str(tmp_path / 'out' / 'runs.csv'))
     assert list(written.runId) == ['s1-c8', 's2-c8'] and 'tippedAt' in written
     said = capsys.readouterr().out
@@ -258,3 +271,6 @@ def test_the_axes_fit_the_data_not_a_law_that_fits_it_badly(tmp_path, monkeypatc
     low, high = ax.get_ylim()
     assert -0.1 * 80 < low < 0.3 and 80 < high < 1.1 * 80   # [mm] the data's range and matplotlib's margin
     assert len(ax.get_lines()) == 3   # the run, the mean and the law, drawn all the same
+    assert dots(ax) == []
+    (ax,) = drawn(monkeypatch, frame, fits, tmp_path, marks={'c': 50, 'elsewhere': 3})
+    assert dots(ax) == [(50, pytest.approx(80, rel=1e-12))]   # the collapse's cycle on its run; no run 'elsewhere'

@@ -205,11 +205,13 @@ def paired(frame, study, reference, at):
 APART_STYLES = (':', '-.', '--', (0, (1, 3)))  # line styles of the runs read apart, in the order of fits' 'apart'
 
 
-def figure(frame, fits, path):
+def figure(frame, fits, path, marks=None):
     """Settlement against log N: every run thin, the mean of each study thick, its logarithmic law dashed.
     The axes fit the data, not the laws (a law that fits badly runs off the panel). Runs read apart (a tipping
     sleeper swings by millimetres) get a panel of their own below, so that the
-    settling runs keep the scale of the top panel; there they are drawn only up to their tipping cycle."""
+    settling runs keep the scale of the top panel; there they are drawn only up to their tipping cycle.
+    `marks` {runId: cycle}: a dot on that run's curve at that cycle, e.g. where most of its grains crushed (the
+    mean of runs that collapse at different cycles climbs in steps no run has: the dots say where each did)."""
     import matplotlib
     matplotlib.use('Agg')
     import matplotlib.pyplot as plt
@@ -221,6 +223,7 @@ def figure(frame, fits, path):
     else:
         fig, ax = plt.subplots(figsize=(6.6, 4.4))
     laws = []
+    dotted = False   # the dots' legend entry once
     for k, (study, g) in enumerate(frame.groupby('study', sort=False)):
         colour = 'C%d' % k
         f = fits[study]
@@ -234,6 +237,11 @@ def figure(frame, fits, path):
                     ax.semilogx(level.cycle, 1e3 * level.settlement, style, color='0.4', lw=0.9)
             else:
                 ax.semilogx(r.cycle, 1e3 * r.settlement, '-', color=colour, lw=0.6, alpha=0.5)
+            at = r[r.cycle == (marks or {}).get(rid)]
+            if len(at):   # on the panel its run is drawn in
+                (low if rid in f['apart'] else ax).semilogx(at.cycle, 1e3 * at.settlement, 'o', color=colour, ms=5, mfc='none',
+                            label=None if dotted else 'cycle of most crushes')
+                dotted = True
         inMean = g[~readApart(g)]
         mean = inMean[inMean.cycle <= f['cycles']].groupby('cycle').settlement.mean()
         ax.semilogx(mean.index, 1e3 * mean.values, '-', color=colour, lw=2.2,
