@@ -5,7 +5,7 @@ docs/box.md, "The study"):
     scripts/box_settlement.py docs/studies/box [docs/studies/box-f3 ...] --out docs/studies/box [--apart 2]
         [--tipping 0.02] [--reference docs/studies/box --at 1 5 10 25 50]
     scripts/box_settlement.py docs/studies/box-sg --by fatigue keep --reference 'docs/studies/box-sg[fatigue=1
-        keep=none]' --at 1 10 100 --out docs/studies/box-sg
+        keep=none]' --at 1 10 100 --apart sg-volume-seed2-c96 --out docs/studies/box-sg
 
 writes settlement.csv (every run's curve), runs.csv (per realization what it broke and cost: crushes, abrasions,
 largest fatigue damage and stress ratio, grains, CPU per cycle and per realization, step, the cycle it tips from),
@@ -14,7 +14,7 @@ settlement.json (per study: the mean curve's and every run's logarithmic and pow
 other studies cover, and each other study's runs against the reference's of the same seed at the cycles --at:
 settlement-paired.csv (per seed and cycle) and settlement-paired.json (per cycle: the mean difference with its 95 %
 interval, the mean ratio). --tipping reads apart the realizations whose sleeper rose back by more than that many mm
-above its deepest settlement (it tips or rocks instead of settling), naming the cycle it did; --by splits a study's
+above its deepest settlement (it tips or rocks instead of settling), naming the cycle it did, and --apart those named by seed or run id; --by splits a study's
 runs into its variants (rows differing in those parameters), each read as a study."""
 import argparse
 import json
@@ -38,6 +38,11 @@ def rise(text):
     return value
 
 
+def realization(text):
+    """--apart's value: a seed (an integer) or a run id (its last slice's, for a realization run in slices)."""
+    return int(text) if text.lstrip('-').isdigit() else text
+
+
 def span(values, fmt):
     """'lo-hi' of a column over a study's realizations in `fmt` ('lo' when all agree once printed; '?' where the
     records have no such column)."""
@@ -52,8 +57,9 @@ def main(argv=None):
     ap = argparse.ArgumentParser(prog='scripts/box_settlement.py', description=__doc__.split('\n\n')[0])
     ap.add_argument('studies', nargs='+', help='studies or their records, with runs that wrote cycles.csv')
     ap.add_argument('--out', required=True, help='where settlement.csv, settlement.json and settlement.png go')
-    ap.add_argument('--apart', type=int, nargs='+', default=[], metavar='SEED',
-                    help='realizations read apart (drawn, fitted, left out of the mean), e.g. a sleeper that tips')
+    ap.add_argument('--apart', type=realization, nargs='+', default=[], metavar='SEED|RUNID',
+                    help='realizations read apart (drawn, fitted, left out of the mean and, beside a run of the same '
+                    'seed, out of its pairs), by seed or by run id: e.g. a sleeper that tips, a resumed twin')
     ap.add_argument('--tipping', type=rise, metavar='MM',
                     help='read apart the realizations whose sleeper rises back more than MM [mm] above its deepest '
                     'settlement (it tips or rocks), from a pair the cycles after it did (default: no detection)')

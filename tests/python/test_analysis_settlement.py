@@ -209,9 +209,23 @@ def test_the_variants_of_one_study_are_studies_of_their_own(tmp_path, capsys):
         settlement.curves([root], by=['fatigue', 'ft0'])
     with pytest.raises(ValueError, match='holds 2 runs of seed 1'):   # without by the variants are ambiguous
         settlement.paired(settlement.curves([root]), root, root, [10])
+    # a twin of seed 1 with fatigue off (a resumed run: another realization of its bed) read apart by its run id:
+    # out of the mean and the pairs, which stay those above; not read apart, the pair is ambiguous
+    twin = study(str(tmp_path / 'twin'), dict(runs, twin1=(1, list(5e-4 * N), {'fatigue': False, 'keep': 'none'})))
+    apart = settlement.curves([twin], by=['fatigue', 'keep'], apart=['twin1'])
+    assert set(apart[apart.apart].runId) == {'twin1'}
+    assert settlement.summary(apart)[twin + '[fatigue=0 keep=none]']['apart'] == ['twin1']
+    rows, per = settlement.paired(apart, twin + '[fatigue=0 keep=none]', twin + '[fatigue=1 keep=none]', [10])
+    assert list(rows.runId) == ['off1', 'off2', 'off3'] and per[0]['meanRatio'] == pytest.approx(0.9, rel=1e-12)
+    with pytest.raises(ValueError, match='holds 2 runs of seed 1'):
+        settlement.paired(settlement.curves([twin], by=['fatigue', 'keep']), twin + '[fatigue=0 keep=none]',
+                          twin + '[fatigue=1 keep=none]', [10])
     main = boxSettlement()
     out = str(tmp_path / 'out')
     assert main([root, '--by', 'fatigue', 'keep', '--reference', on, '--at', '10', '--out', out]) == 0
+    assert main([twin, '--by', 'fatigue', 'keep', '--reference', twin + '[fatigue=1 keep=none]', '--apart', 'twin1',
+                 '--out', str(tmp_path / 'twinOut')]) == 0
+    assert 'read apart: twin1' in capsys.readouterr().out
     with open(os.path.join(out, 'settlement-paired.json')) as fh:
         assert json.load(fh)[off]['perCycle'][0]['meanRatio'] == pytest.approx(0.9, rel=1e-9)
     assert main([root, '--by', 'fatigue', '--reference', root + '[fatigue=2]', '--out', out]) == 2

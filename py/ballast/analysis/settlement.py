@@ -45,7 +45,7 @@ def variantLabel(path, params, by):
 def curves(paths, apart=(), tipping=None, by=()):
     """The settlement curves of the finished runs of the studies (or records) at `paths`, a realization run in
     slices once, as its last slice: a DataFrame with study, runId, seed, cycle, settlement [m], resilient [m]
-    (NaN where a run has none), apart (the seed is one of `apart`: a realization read apart by choice) and
+    (NaN where a run has none), apart (its seed or runId is one of `apart`: a realization read apart by choice) and
     tippedAt (with `tipping`, a rise [m]: the cycle from which the sleeper rose back more than that,
     tippingOnset; NaN where it did not). A realization apart or tipped is left out of the mean (readApart).
     With `by` (parameter names) the runs of a study that differ in those (its variants, fatigue on and off for
@@ -60,7 +60,7 @@ def curves(paths, apart=(), tipping=None, by=()):
         rows.append(pd.DataFrame({'study': label, 'runId': run.runId, 'seed': seed,
                                   'cycle': c['cycle'].astype(int), 'settlement': s,
                                   'resilient': c['resilient'] if 'resilient' in c else math.nan,
-                                  'apart': seed in apart,
+                                  'apart': seed in apart or run.runId in apart,
                                   'tippedAt': math.nan if onset is None else float(onset)}))
     if not rows:
         raise ValueError('curves: no run with a cycles.csv (cycle, settlement) in %s' % ', '.join(paths))
@@ -170,11 +170,14 @@ def paired(frame, study, reference, at):
     with both settlements [m], their difference (study - reference) and ratio; and per cycle over the seeds the
     mean difference with its 95 % interval (Student's t, two seeds or more) and the mean ratio, the pairs where
     either is read apart or has tipped by that cycle left out (they stay in the rows, flagged apart or tipped: a
-    pair compares one bed at one cycle, valid until a sleeper tips). ValueError if a study holds two
-    realizations of one seed (the pair would be ambiguous)."""
+    pair compares one bed at one cycle, valid until a sleeper tips). A seed's realizations read apart by choice
+    beside one that is not (a twin of the same bed, perturbed by a resumption) are left out of its pairs.
+    ValueError if a study holds two realizations of one seed otherwise (the pair would be ambiguous)."""
     runs = {}
     for name in (study, reference):
         g = frame[frame.study == name]
+        twins = g.groupby('seed').runId.transform('nunique') > 1
+        g = g[~(twins & g.apart)]
         twice = g.groupby('seed').runId.nunique()
         if (twice > 1).any():
             seed = twice[twice > 1].index[0]
