@@ -100,6 +100,7 @@ def test_a_realization_read_apart_is_fitted_and_drawn_but_left_out_of_the_mean(t
     assert settlement.summary(settlement.curves([root]))[root]['runs'] == 3   # none apart: all three
     assert os.path.isfile(settlement.figure(frame, {root: f}, str(tmp_path / 'settlement.png')))
     top, low = drawn(monkeypatch, frame, {root: f}, tmp_path)
+    assert top.get_title() == 'runs in the mean'   # read apart by choice: none tipped, no grey runs to name
     # the top panel keeps the settling runs' scale: nothing of seed 2 (it sinks to -0.8 mm, is never level)
     assert min(min(l.get_ydata()) for l in top.get_lines()) == pytest.approx(0.1, rel=1e-9)
     assert [list(l.get_ydata()) for l in low.get_lines()] == [pytest.approx(list(-0.1 * N), rel=1e-12)]
@@ -157,6 +158,7 @@ def test_a_sleeper_that_rises_back_is_found_and_read_apart_from_its_onset(tmp_pa
     assert f['mean']['log']['a'] == pytest.approx(2e-4, rel=1e-9)   # the mean of seeds 1 and 3
     top, low = drawn(monkeypatch, frame, {ref: f}, tmp_path)   # seed 2 on the top panel only before it tips
     assert [list(l.get_xdata()) for l in top.get_lines() if l.get_color() == '0.4'] == [list(range(1, 8))]
+    assert 'grey: the tipping runs before they tip' in top.get_title()
     assert [len(l.get_xdata()) for l in low.get_lines()] == [10]
     assert settlement.summary(settlement.curves([ref], tipping=1e-3))[ref]['runs'] == 3
     # paired with itself scaled 1.1: seed 2's pair counts until cycle 7, not from 8 on

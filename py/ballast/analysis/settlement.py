@@ -259,7 +259,8 @@ def figure(frame, fits, path, marks=None):
     ax.set_ylabel('permanent settlement [mm]')
     axes = (ax, low) if split else (ax,)
     if split:
-        ax.set_title('runs in the mean; grey: the tipping runs before they tip', fontsize=8)
+        tipped = any(f['tippedAt'] for f in fits.values())
+        ax.set_title('runs in the mean' + ('; grey: the tipping runs before they tip' if tipped else ''), fontsize=8)
         low.set_ylabel('settlement [mm]')
         low.set_title('runs read apart, whole history', fontsize=8)
     axes[-1].set_xlabel('load cycles N')
