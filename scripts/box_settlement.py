@@ -14,8 +14,9 @@ settlement.json (per study: the mean curve's and every run's logarithmic and pow
 other studies cover, and each other study's runs against the reference's of the same seed at the cycles --at:
 settlement-paired.csv (per seed and cycle) and settlement-paired.json (per cycle: the mean difference with its 95 %
 interval, the mean ratio). --tipping reads apart the realizations whose sleeper rose back by more than that many mm
-above its deepest settlement (it tips or rocks instead of settling), naming the cycle it did, and --apart those named by seed or run id; --by splits a study's
-runs into its variants (rows differing in those parameters), each read as a study."""
+above its deepest settlement (it tips or rocks instead of settling), naming the cycle it did, and --apart those
+named by seed or run id; --by splits a study's runs into its variants (rows differing in those parameters), each
+read as a study."""
 import argparse
 import json
 import os
@@ -40,7 +41,7 @@ def rise(text):
 
 def realization(text):
     """--apart's value: a seed (an integer) or a run id (its last slice's, for a realization run in slices)."""
-    return int(text) if text.lstrip('-').isdigit() else text
+    return int(text) if text.isdigit() else text
 
 
 def span(values, fmt):

@@ -242,8 +242,8 @@ def figure(frame, fits, path, marks=None):
                 ax.semilogx(r.cycle, 1e3 * r.settlement, '-', color=colour, lw=0.6, alpha=0.5)
             at = r[r.cycle == (marks or {}).get(rid)]
             if len(at):   # on the panel its run is drawn in
-                (low if rid in f['apart'] else ax).semilogx(at.cycle, 1e3 * at.settlement, 'o', color=colour, ms=5, mfc='none',
-                            label=None if dotted else 'cycle of most crushes')
+                (low if rid in f['apart'] else ax).semilogx(at.cycle, 1e3 * at.settlement, 'o', color=colour, ms=5,
+                                                            mfc='none', label=None if dotted else 'cycle of most crushes')
                 dotted = True
         inMean = g[~readApart(g)]
         mean = inMean[inMean.cycle <= f['cycles']].groupby('cycle').settlement.mean()
