@@ -219,9 +219,10 @@ def test_the_variants_of_one_study_are_studies_of_their_own(tmp_path, capsys):
     assert settlement.summary(apart)[twin + '[fatigue=0 keep=none]']['apart'] == ['twin1']
     rows, per = settlement.paired(apart, twin + '[fatigue=0 keep=none]', twin + '[fatigue=1 keep=none]', [10])
     assert list(rows.runId) == ['off1', 'off2', 'off3'] and per[0]['meanRatio'] == pytest.approx(0.9, rel=1e-12)
-    with pytest.raises(ValueError, match='holds 2 runs of seed 1'):
-        settlement.paired(settlement.curves([twin], by=['fatigue', 'keep']), twin + '[fatigue=0 keep=none]',
-                          twin + '[fatigue=1 keep=none]', [10])
+    for apartToo in ([], ['twin1', 'off1']):   # none apart, or both: which of seed 1's to pair is ambiguous
+        with pytest.raises(ValueError, match='holds 2 runs of seed 1'):
+            settlement.paired(settlement.curves([twin], by=['fatigue', 'keep'], apart=apartToo),
+                              twin + '[fatigue=0 keep=none]', twin + '[fatigue=1 keep=none]', [10])
     main = boxSettlement()
     out = str(tmp_path / 'out')
     assert main([root, '--by', 'fatigue', 'keep', '--reference', on, '--at', '10', '--out', out]) == 0

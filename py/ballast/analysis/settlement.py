@@ -176,8 +176,7 @@ def paired(frame, study, reference, at):
     runs = {}
     for name in (study, reference):
         g = frame[frame.study == name]
-        twins = g.groupby('seed').runId.transform('nunique') > 1
-        g = g[~(twins & g.apart)]
+        g = g[~g.apart | g.groupby('seed').apart.transform('all')]   # apart beside a run of its seed in the mean
         twice = g.groupby('seed').runId.nunique()
         if (twice > 1).any():
             seed = twice[twice > 1].index[0]
