@@ -24,7 +24,7 @@ argv = sys.argv[1:]
 script = argv[argv.index('-x') + 1]
 opts = dict(zip(argv[argv.index('-x') + 2::2], argv[argv.index('-x') + 3::2]))
 oedometer = declaration('oedometer')
-# the row split by hand: ballast.study.table.tableRow would boot YADE's reader, 0.5 s a fake run
+# the row split by hand: ballast.tables.tableRow would boot YADE's reader, 0.5 s a fake run
 table, line = os.environ['YADE_BATCH'].rsplit(':', 1)
 with open(table) as fh:
     lines = fh.read().split('\n')
@@ -43,7 +43,7 @@ if mode == 'fail':
     print('RuntimeError: the fake failed on purpose')
     sys.exit(3)
 if mode == 'hang':
-    # a state saved to go on from, as an experiment that declares resume leaves it (ballast.study.files.killedRunState)
+    # a state saved to go on from, as an experiment that declares resume leaves it (ballast.runfiles.killedRunState)
     open(os.path.join(out, 'state-1.gz'), 'w').close()
     with open(os.path.join(out, 'run.json'), 'w') as fh:
         json.dump({'status': 'running', 'lastState': 'state-1.gz'}, fh)

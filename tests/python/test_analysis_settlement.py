@@ -69,9 +69,9 @@ def test_a_realization_run_in_slices_counts_once_as_its_last_slice(tmp_path):
 
 def caught(monkeypatch):
     """The figures settlement.figure draws from now on, caught where they would be saved."""
-    import ballast.study.files
+    import ballast.runfiles
     figures = []
-    monkeypatch.setattr(ballast.study.files, 'saveFigure', lambda fig, path: figures.append(fig))
+    monkeypatch.setattr(ballast.runfiles, 'saveFigure', lambda fig, path: figures.append(fig))
     return figures
 
 

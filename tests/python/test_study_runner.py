@@ -17,7 +17,7 @@ import pytest
 
 from ballast.experiments import declaration
 from ballast.study import runner
-from ballast.study.files import codeSha1, readSummary, writeAtomic
+from ballast.runfiles import codeSha1, readSummary, writeAtomic
 from study_fakes import writeFakeYade
 
 TABLE = 'seed f\n1 2\n'

@@ -13,7 +13,7 @@ import pytest
 
 from ballast.experiments import Declaration, declaration
 from ballast.study import LocalExecutor, Study, StudyData, runner, status
-from ballast.study.files import codeSha1, writeAtomic
+from ballast.runfiles import codeSha1, writeAtomic
 from ballast.study.options import StudyError
 from study_fakes import ctrlC, writeFakeYade  # noqa: F401 (ctrlC is a fixture)
 

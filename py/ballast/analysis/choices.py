@@ -17,7 +17,8 @@ other criterion's running maximum, which is the ft0 that starts its crushing at 
 import numpy as np
 
 from ..experiments import declaration
-from ..study.data import StudyRuns, column
+from ..runfiles import column
+from ..study.data import StudyRuns
 from .figures import writeFigure
 
 PARAMS = declaration('oedometer').params

@@ -4,7 +4,7 @@
     delta_peak.png   displacement at peak force against the parameter: one grey line per realization,
                      mean +- standard deviation as error bars (Fig. 5)
     checks.png       from the per-check logs: grains crushed, sigma/f_t at a crush, the onset and the
-                     force network at half the peak load, per value (ballast.analysis.checks)
+                     force network at half the peak load, per value (ballast.experiments.oedometer.checkstats)
 
 and the axis of a studied parameter the other analyses draw on. matplotlib (Agg), no YADE.
 """
@@ -14,7 +14,7 @@ import os
 import numpy as np
 
 from ..study.aggregate import count, label, stats
-from ..study.data import column
+from ..runfiles import column
 
 LABELS = {'f': 'loading frequency f [Hz]', 'Tc': 'crushing period $T_c$ [s]', 'rMin': '$r_{min}$ [m]', 'ft0': '$f_{t0}$ [Pa m]',
           'gamma': r'reduction factor $\gamma$ [-]', 'pattern': 'replacement pattern'}

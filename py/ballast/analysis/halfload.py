@@ -17,8 +17,9 @@ import numpy as np
 
 from ..experiments.oedometer.loadcurve import halfLoadTime
 from ..study.aggregate import fmt
-from ..study.data import StudyRuns, column, readTable
-from .checks import HALF_LOAD_GAP
+from ..runfiles import column
+from ..study.data import StudyRuns, readTable
+from ..experiments.oedometer.checkstats import HALF_LOAD_GAP
 from .figures import writeFigure
 
 STOP_AT = halfLoadTime(1.0)  # [load periods] the oedometer's stopAt of the sweep: eq. 8 passes Fmax/2 at T/4

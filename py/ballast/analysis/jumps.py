@@ -145,7 +145,7 @@ def figure(path, out, reference=None):
     import matplotlib
     matplotlib.use('Agg')
     import matplotlib.pyplot as plt
-    from ..study.files import saveFigure
+    from ..runfiles import saveFigure
     runs = _runs(path, reference)
     fig, (ax, bx, cx) = plt.subplots(3, 1, figsize=(7, 9.6), sharex=True)
     seeds = sorted(runs.seed.unique())

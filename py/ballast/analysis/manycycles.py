@@ -5,7 +5,8 @@ summary cut to SUMMARY_KEYS. NumPy, no YADE."""
 import csv
 import os
 
-from ..study.data import column, read_run
+from ..runfiles import column
+from ..study.data import read_run
 from ..study.records import writeRecord
 from .figures import writeFigure
 

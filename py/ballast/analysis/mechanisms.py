@@ -14,7 +14,7 @@ import numpy as np
 
 from ..experiments import declaration
 from ..study.data import StudyData
-from .checks import CHECK_STATS
+from ..experiments.oedometer.checkstats import CHECK_STATS
 from .figures import logPositions, paramAxis, writeFigure
 
 BASELINE = 'batch (the paper)'

@@ -104,7 +104,7 @@ def figure(pairs, path):
     import matplotlib
     matplotlib.use('Agg')
     import matplotlib.pyplot as plt
-    from ..study.files import saveFigure
+    from ..runfiles import saveFigure
     fig, axes = plt.subplots(1, len(pairs), figsize=(4.5 * len(pairs), 4.2), squeeze=False)
     for ax, (name, (a, b)) in zip(axes[0], pairs.items()):
         a, b = a.set_index('params.seed'), b.set_index('params.seed')

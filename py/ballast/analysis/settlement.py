@@ -217,7 +217,7 @@ def figure(frame, fits, path, marks=None):
     import matplotlib
     matplotlib.use('Agg')
     import matplotlib.pyplot as plt
-    from ..study.files import saveFigure
+    from ..runfiles import saveFigure
     apart = readApart(frame)
     split = bool(apart.any())
     if split:

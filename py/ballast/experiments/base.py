@@ -10,7 +10,7 @@ reopening through :mod:`ballast.runtime`.
     exp.save(path); SomeExperiment.reopen(path, readOnly=True)
 
 Every file is written atomically (a temporary name in the same folder, synced, then renamed:
-:func:`ballast.study.files.writeAtomic`; states by :meth:`Experiment.save`), so a killed run leaves
+:func:`ballast.runfiles.writeAtomic`; states by :meth:`Experiment.save`), so a killed run leaves
 whole files or none. An experiment that calls :meth:`Experiment.markRunning` and
 :meth:`Experiment.markFinished` keeps ``run.json`` in its folder: ``{"status": "running", ...}`` from
 the start, ``"finished"`` once every output is written; ``running`` in a folder whose process is gone
@@ -40,7 +40,7 @@ from . import chain, grains, timestep
 from .cyclejump import CycleJumper
 from ..names import runDirName
 from ..params import CRUSH, ParamError, requireWritableDir
-from ..study.files import killedRunState, runStatus, syncDir, writeAtomic
+from ..runfiles import killedRunState, runStatus, syncDir, writeAtomic
 from .phases import Phases
 
 JUMP_STATE = 'state-jump%04d-%s.yade.gz'   # the states around jump k: 'before' and 'after' it

@@ -80,13 +80,13 @@ def joinNegativeValues(argv):
 
 
 def tableValues(declaration):
-    """Under yade-batch (YADE_BATCH=table:line): the row's raw cells (ballast.study.table.tableRow: every
+    """Under yade-batch (YADE_BATCH=table:line): the row's raw cells (ballast.tables.tableRow: every
     column a parameter, every cell readable, named otherwise), then YADE's readParamsFromTable sets O.tags
     (description, d.id) as yade-batch does. Else {}."""
     from yade import utils
     if not utils.runningInBatch():
         return {}
-    from ..study.table import tableRow
+    from ..tables import tableRow
     tableFile, line = os.environ['YADE_BATCH'].split(':')[:2]
     cells = tableRow(tableFile, int(line), declaration)
     utils.readParamsFromTable(noTableOk=True, **{k: p.default for k, p in declaration.params.items()})
@@ -110,7 +110,7 @@ def experiment(ap, argv, declaration, experimentClass):
     experimentClass() (a callable giving the class: its module needs YADE) and its outputs checked writable,
     before any work. A bad value: one line naming the parameter, exit status 2."""
     from ..params import ParamError
-    from ..study.options import StudyError
+    from ..tables import TableError
     try:
         params = readParams(ap, argv, declaration)
         exp = experimentClass()(parameters=params)   # checked once, by readParams
@@ -118,7 +118,7 @@ def experiment(ap, argv, declaration, experimentClass):
     except ParamError as e:
         sys.stderr.write('%s: bad parameter %s: %s\n' % (ap.script, e.name, e))
         sys.exit(2)
-    except StudyError as e:  # a yade-batch table YADE would misread
+    except TableError as e:  # a yade-batch table YADE would misread
         sys.stderr.write('%s: bad table: %s\n' % (ap.script, e))
         sys.exit(2)
     return exp

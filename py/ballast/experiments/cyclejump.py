@@ -15,7 +15,7 @@ import pandas as pd
 
 from .. import _ballast, runtime
 from ..settlementlaws import settlementLaw
-from ..study.files import writeAtomic
+from ..runfiles import writeAtomic
 
 LOG_COLUMNS = ('jump', 'cycle', 'cycles', 'to', 'limit', 'grain', 'maxRate', 'maxDamage', 'settlementLawA',
                'settlementLawB', 'settlementLawR2', 'settlementJumped', 'stateBefore', 'stateAfter', 'grainPeak',

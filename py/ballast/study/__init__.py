@@ -20,7 +20,8 @@ from .data import StudyData, StudyRuns, read_run
 from .executors import DaskExecutor, LocalExecutor, makeExecutor
 from .options import StudyError
 from .study import Study, status
-from .table import Table, gridTable, tableRow
+from ..tables import Table, tableRow
+from .table import gridTable
 
 __all__ = ['DaskExecutor', 'LocalExecutor', 'Study', 'StudyData', 'StudyError', 'StudyRuns', 'Table', 'gridTable',
            'makeExecutor', 'read_run', 'status', 'tableRow']

@@ -7,14 +7,14 @@ reader of the package (numbers parsed to the last bit, as Python parses them); s
 row.json stay dicts, :meth:`StudyRuns.frame` gives the runs as one DataFrame. The experiment that made
 a study is read from study.json ('experiment'; DEFAULT_EXPERIMENT for the folders older than it), and
 its declaration's ``derived`` adds to every summary the results the run's files give (the oedometer:
-what the per-check log says, ballast.analysis.checks). Needs no YADE.
+what the per-check log says, ballast.experiments.oedometer.checkstats). Needs no YADE.
 """
 import json
 import os
 
-from .files import readSummary
+from ..runfiles import column, readSummary
 from .options import StudyError, experimentDeclaration
-from .table import cellValue
+from ..tables import cellValue
 
 # the CSV files of a run, each a property of Run (crushes: see Run.crushes)
 TABLES = ('fd', 'checks', 'events', 'cycles', 'psd')
@@ -35,11 +35,6 @@ def readTable(path):
         return pandas.read_csv(path, float_precision='round_trip')
     except pandas.errors.EmptyDataError:
         return pandas.DataFrame()
-
-
-def column(frame, name):
-    """A column of a DataFrame as a float array."""
-    return frame[name].to_numpy(dtype=float)
 
 
 class Run:

@@ -4,14 +4,16 @@ them here), and the error for bad input."""
 import argparse
 import re
 
+from ..tables import TableError
 from ..params import NUMBER_POSITIVE, Param, ParamError, anyInt, positive, positiveInt, text, validate
 
 OWNER = 'study'
 
 
-class StudyError(Exception):
-    """Bad input, found before any run starts; the message names the argument (or the table line
-    and column), the value and what is allowed. The command lines exit with status 2 on it."""
+# Bad input, found before any run starts; the message names the argument (or the table line and column), the
+# value and what is allowed. The command lines exit with status 2 on it. One class with the table reader's
+# (ballast.tables, a floor below): a study's and a table's errors are caught alike.
+StudyError = TableError
 
 
 # what a study runs when none is named, and what made the study folders older than study.json's 'experiment'

@@ -34,8 +34,9 @@ import uuid
 
 import numpy as np
 
-from .data import Run, column
-from .files import moveSynced, readSummary, writeAtomic
+from ..runfiles import column
+from .data import Run
+from ..runfiles import moveSynced, readSummary, writeAtomic
 from .options import experimentDeclaration
 
 MAX_FD_ROWS = 600          # rows of a recorded F-delta curve [-]: ~40 kB, enough for the paper's figures

@@ -35,8 +35,8 @@ import threading
 import time
 import traceback
 
-from .files import codeSha1, killedRunState, moveSynced, readFiles, readSummary, sha1, writeAtomic
-from .table import TABLE_DIR
+from ..runfiles import codeSha1, killedRunState, moveSynced, readFiles, readSummary, sha1, writeAtomic
+from ..tables import TABLE_DIR
 
 # Set on Ctrl-C by the local executor: every running run kills its yade and returns.
 STOP = threading.Event()

@@ -33,11 +33,11 @@ import uuid
 
 from ..names import fmtTime
 from ..params import ParamError
-from .files import codeSha1, readSummary, sha1, writeAtomic
+from ..runfiles import codeSha1, readSummary, sha1, writeAtomic
 from .options import OPTIONS, StudyError, experimentDeclaration, optionValue
 from .records import hasRecord, keepRecord, recordPath, writeIndex
 from .runner import KEEP, clearWork, failedLog, finalizeShipped, keptState, lastError, newestLog, runProgress
-from .table import Table, resolvePaths, tableDir
+from ..tables import Table, resolvePaths, tableDir
 
 # yade-batch's !COLUMNS that are not environment variables of the run
 BATCH_COLUMNS = ('!SCRIPT', '!EXEC', '!AFFINITY', '!COUNT')

@@ -13,7 +13,7 @@ from yade import O, Vector3, pack, utils
 
 from ... import runtime
 from ...geometry import meanCubedDiameterVolume, sphereVolume
-from ...study.files import writeAtomic
+from ...runfiles import writeAtomic
 from .. import grains, preparation
 from ..oedometer import scene
 from .parameters import bedKey

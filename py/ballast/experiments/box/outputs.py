@@ -29,7 +29,7 @@ from yade import O
 
 from ... import grading as gr
 from ...engines import BallastAbrasionEngine, BallastCrushEngine
-from ...study.files import saveFigure, strictJson, writeAtomic
+from ...runfiles import saveFigure, strictJson, writeAtomic
 from .. import grains
 from ...settlementlaws import settlementJumped
 from ..oedometer.outputs import _array, _unstructured, writeContactsVtu, writePvd

@@ -16,8 +16,8 @@ STATISTICS = ['deltaAtPeak', 'deltaAtAppliedPeak', 'deltaMax', 'peakForce', 'nCr
 
 
 def checkResults(run):
-    """What the per-check log and the crushes of a run say (ballast.analysis.checks.checkStats)."""
-    from ...analysis.checks import checkStats
+    """What the per-check log and the crushes of a run say (checkstats.checkStats)."""
+    from .checkstats import checkStats
     return checkStats(run)
 
 

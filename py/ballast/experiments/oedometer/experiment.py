@@ -34,7 +34,7 @@ from ... import grading, runtime
 from ...geometry import sphereVolume
 from ...names import fmtTime
 from ...params import CYCLE_JUMP, validate
-from ...study.files import runStatus, writeAtomic
+from ...runfiles import runStatus, writeAtomic
 from .. import chain, grains
 from .. import timestep
 from ..base import Experiment

@@ -17,7 +17,7 @@ from yade import O, plot
 from yade.wrapper import Facet, Sphere
 
 from ... import _ballast, grading, harvest, runtime
-from ...study.files import saveFigure, strictJson, writeAtomic
+from ...runfiles import saveFigure, strictJson, writeAtomic
 from ...settlementlaws import settlementJumped
 
 FD_COLUMNS = ('t', 'F', 'delta', 'nCrushed', 'nAbraded', 'Fapplied')

@@ -10,7 +10,7 @@ import time
 import numpy as np
 import pandas as pd
 
-from ...study.files import saveFigure, strictJson, writeAtomic
+from ...runfiles import saveFigure, strictJson, writeAtomic
 from . import strengths
 
 STRENGTH_COLUMNS = ['grain', 'diameter', 'sizeClass', 'crushed', 'force', 'forceBottom', 'displacement',

@@ -9,8 +9,8 @@ import math
 
 import numpy as np
 
-from ..experiments.oedometer.loadcurve import halfLoadTime, loadCurve, peakTime
-from ..study.data import column
+from ...runfiles import column
+from .loadcurve import halfLoadTime, loadCurve, peakTime
 
 HALF_LOAD_GAP = 0.05  # [-] the widest gap in applied force, over Fmax, halfLoadRatio interpolates across
 CHECK_STATS = ('crushingChecks', 'crushesPerCrushingCheck', 'ratioAtCrushMax', 'ratioAtCrushMean',

@@ -1,4 +1,4 @@
-"""Tests of ballast.analysis.checks: what the per-check log and the crushes of a run say, worked out by
+"""Tests of ballast.experiments.oedometer.checkstats: what the per-check log and the crushes of a run say, worked out by
 hand on fabricated runs (study_fakes.fabricateStudy with checks.csv and crushes.csv or events.csv), as
 a study reads them (the oedometer's declaration merges them into every summary)."""
 import math
@@ -6,7 +6,7 @@ import os
 
 import pytest
 
-from ballast.analysis.checks import halfLoadRatio
+from ballast.experiments.oedometer.checkstats import halfLoadRatio
 from ballast.study.data import StudyData
 from study_fakes import fabricateStudy
 

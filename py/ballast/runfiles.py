@@ -1,10 +1,16 @@
-"""Files of a study: written atomically and synced (on disk before their name is), identified by
-sha1 (a table, the code of a run); the test of a finished run."""
+"""The files of runs and studies, below both: written atomically and synced (on disk before their name
+is), figures saved the same way, identified by sha1 (a table, the code of a run), read back (a summary,
+a column, the state a killed run left); the test of a finished run. No YADE."""
 import hashlib
 import json
 import math
 import os
 import uuid
+
+
+def column(frame, name):
+    """A column of a DataFrame (a run's CSV file) as a float array."""
+    return frame[name].to_numpy(dtype=float)
 
 
 def sha1(data):

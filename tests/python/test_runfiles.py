@@ -1,4 +1,4 @@
-"""Tests of ballast.study.files: atomic writes, and the sha1 that identifies the code of a run (the
+"""Tests of ballast.runfiles: atomic writes, and the sha1 that identifies the code of a run (the
 script and the installed ballast package); strict JSON; the state a killed run left."""
 import json
 import os
@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 import ballast
-from ballast.study import files
+from ballast import runfiles as files
 
 
 def test_write_atomic_replaces_whole_files_and_leaves_no_temporary(tmp_path):
