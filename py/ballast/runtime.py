@@ -291,6 +291,15 @@ def unpackRows(s):
     return [tuple(r) for r in cells.tolist()]
 
 
+def fromAttributes(cls, s):
+    """An object of `cls` whose state() is its attributes by name, back from that state (a persistent class's
+    fromState in one line)."""
+    obj = cls()
+    for k, v in s.items():
+        setattr(obj, k, v)
+    return obj
+
+
 def ref(obj):
     """What a state stores for a reference to another registered object (None stays None)."""
     return None if obj is None else register(obj)

@@ -153,7 +153,7 @@ def test_a_killed_run_resumed_after_a_jump_forgets_the_later_jumps_of_the_killed
     """resume with cycle jumping: the run killed after its last jump's state, as if its process had jumped once more
     before it died (a row in jumps.csv, that jump's states on disk), goes on from that state: jumps.csv back to the
     state's jumps (and those taken since), the later jump's states gone, the run at its cycles."""
-    from ballast.experiments.base import JUMP_STATE
+    from ballast.experiments.cyclic import JUMP_STATE
     from test_box_experiment import killedCopy
     test, s = jumped
     jumps = pd.read_csv(os.path.join(test.out, 'jumps.csv'))

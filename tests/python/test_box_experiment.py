@@ -85,15 +85,21 @@ def test_a_short_run_writes_every_output(run):
         assert json.load(fh)['nCrushed'] == s['nCrushed']
 
 
-def test_vtk_frames_at_the_graded_cycles_for_paraview(run):
+def test_vtk_frames_every_vtk_cycles_for_paraview(run):
+    """vtk = 1 (cycles, as in every experiment): a frame at the start of cycling, after each of the 3 cycles and at
+    the end, each of three files named by the step, listed in boxes.pvd at its loading time; the last has every grain."""
     test, s = run
+    frames = test.frames
+    T = 1 / SMALL['f']
+    assert [f[0] for f in frames[:4]] == pytest.approx([0, T, 2 * T, 3 * T], abs=2 * s['dt'])
+    # and the state at the end, a few samples past the last cycle's close (where the run stops)
+    assert len(frames) == 5 and 3 * T < frames[-1][0] <= 3 * T + 3 * T / test.p['samples']
     with open(os.path.join(test.out, 'boxes.pvd')) as fh:
         pvd = fh.read()
-    for k in (0, 1, 2, 3):
-        for part in ('grains', 'contacts', 'sleeper'):
-            name = 'vtk/%s-%06d.vtu' % (part, k)
-            assert name in pvd and os.path.isfile(os.path.join(test.out, name)), name
-    with open(os.path.join(test.out, 'vtk', 'grains-000003.vtu')) as fh:
+    for frame in frames:
+        for part, name in zip(('grains', 'contacts', 'sleeper'), frame[1:]):
+            assert name.startswith('vtk/%s-' % part) and name in pvd and os.path.isfile(os.path.join(test.out, name))
+    with open(os.path.join(test.out, frames[-1][1])) as fh:
         assert 'NumberOfPoints="%d"' % s['nGrains'] in fh.read()
 
 

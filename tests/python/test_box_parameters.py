@@ -24,7 +24,7 @@ from ballast.params import ParamError
     ({'rollingFriction': 0.2, 'law': 'hertz'}, 'rollingFriction', "needs law = 'linear'"),
     ({'peakLoad': -1}, 'peakLoad', 'expected a finite number > 0'),
     ({'layers': 0}, 'layers', 'an integer in [1, 20]'),
-    ({'saveEvery': -1}, 'saveEvery', 'an integer >= 0'),
+    ({'saveEvery': -1}, 'saveEvery', 'a finite number >= 0'),
 ])
 def test_a_bad_value_is_refused_naming_the_parameter(values, name, why):
     with pytest.raises(ParamError, match=r'BoxTest: %s = ' % name) as e:

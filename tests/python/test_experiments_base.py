@@ -10,7 +10,8 @@ from yade import O, utils  # noqa: E402
 from yade.wrapper import ForceResetter, NewtonIntegrator  # noqa: E402
 
 from ballast import runtime  # noqa: E402
-from ballast.experiments.base import Experiment, RunDirectory  # noqa: E402
+from ballast.experiments.base import Experiment  # noqa: E402
+from ballast.experiments.rundir import RunDirectory  # noqa: E402
 from ballast.params import Param, Parameters, ParamError, anyText, positive, text  # noqa: E402
 
 G = 10.0   # [m/s^2] gravity of the test

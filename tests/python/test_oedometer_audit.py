@@ -15,9 +15,9 @@ import numpy as np
 import pytest
 
 yade = pytest.importorskip('yade')
-from ballast.experiments.base import checkStateFile  # noqa: E402
+from ballast.experiments.rundir import checkStateFile  # noqa: E402
 from ballast.oedometer import Oedometer  # noqa: E402
-from ballast.oedometer.outputs import COLOR_ORIGINAL  # noqa: E402
+from ballast.experiments.tracker import COLOR_ORIGINAL  # noqa: E402
 
 F = 50.0  # [Hz]
 SMALL = dict(f=F, ft0=5e5, strength=1.5e10, diameter=0.15, height=0.08, vMax=5, samples=1000, progress=60)
@@ -40,8 +40,8 @@ if killAtSave:  # the kth state is cut off half-written, as by a SIGKILL while Y
                 fh.truncate(os.path.getsize(path) // 2)
             os.kill(os.getpid(), signal.SIGKILL)
     Omega.save = cut
-Oedometer(results=results, runId='killed', packingDir=packings, saveEvery=0.1 / %r, %s).run()
-''' % (F, ', '.join('%s=%r' % kv for kv in SMALL.items()))
+Oedometer(results=results, runId='killed', packingDir=packings, saveEvery=0.1, %s).run()
+''' % ', '.join('%s=%r' % kv for kv in SMALL.items())
 
 
 def yadeRun(script, args, **kw):
@@ -58,7 +58,7 @@ def root(tmp_path_factory):
 @pytest.fixture(scope='module')
 def first(root):
     """A run that builds the packing the others reuse, with VTK frames."""
-    run = Oedometer(results=str(root / 'first'), runId='first', packingDir=str(root / 'packings'), vtk=0.3 / F,
+    run = Oedometer(results=str(root / 'first'), runId='first', packingDir=str(root / 'packings'), vtk=0.3,
                     **SMALL)
     return run, run.run()
 

@@ -68,7 +68,7 @@ def off(root, ft0):
 
 def files(folder):
     out = {f: open(os.path.join(folder, f)).read() for f in ('fd.csv', 'checks.csv', 'events.csv')}
-    out['cycles'] = pd.read_csv(os.path.join(folder, 'cycles.csv')).iloc[:, :8]
+    out['cycles'] = pd.read_csv(os.path.join(folder, 'cycles.csv')).drop(columns='cpuSeconds')   # the process's
     return out
 
 

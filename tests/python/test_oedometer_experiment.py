@@ -13,12 +13,13 @@ import shutil
 import subprocess
 
 import numpy as np
+import pandas as pd
 import pytest
 
 yade = pytest.importorskip('yade')
 from ballast.oedometer import Oedometer  # noqa: E402
 from ballast.oedometer.loading import eq8  # noqa: E402
-from ballast.oedometer.outputs import CYCLE_COLUMNS  # noqa: E402
+from ballast.experiments.cyclic import COLUMNS as CYCLE_COLUMNS  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 DIAMETER, HEIGHT, SEGMENTS = 0.15, 0.08, 48   # [m], [m], [-]
@@ -66,7 +67,7 @@ def strong(root):
 @pytest.fixture(scope='module')
 def weak(root, strong):
     run = Oedometer(f=F_WEAK, ft0=5e5, strength=1.5e10, results=os.path.join(root, 'weak'), runId='weak',
-                    packingDir=os.path.join(root, 'packings'), saveEvery=0.45 / F_WEAK, vtk=0.25 / F_WEAK, **SMALL)
+                    packingDir=os.path.join(root, 'packings'), saveEvery=0.45, vtk=0.25, **SMALL)
     run.run()
     return (run,) + files(run.out)
 
@@ -181,7 +182,7 @@ def test_grain_state_follows_the_events(weak):
         if i in byId:
             assert int(byId[i]['nAbraded']) == n
     from yade import O
-    from ballast.oedometer.outputs import COLOR_ORIGINAL
+    from ballast.experiments.tracker import COLOR_ORIGINAL
     fragments = [i for i in byId if int(byId[i]['generation']) > 0 and int(byId[i]['nAbraded']) == 0]
     assert fragments and all(tuple(O.bodies[i].shape.color) != pytest.approx(COLOR_ORIGINAL) for i in fragments
                              if run is weak[0] and O.bodies[i] is not None)
@@ -372,16 +373,24 @@ def test_three_cycles_write_cycles_csv(strong, root):
     run = Oedometer(f=F_STRONG, ft0=1e12, strength=1e15, cycles=3, Fmin=0.2 * FMAX, results=os.path.join(root, 'cycles'),
                     runId='three', packingDir=os.path.join(root, 'packings'), **SMALL)
     s = run.run()
-    c = np.loadtxt(os.path.join(run.out, 'cycles.csv'), delimiter=',', skiprows=1, ndmin=2)
+    cyc = pd.read_csv(os.path.join(run.out, 'cycles.csv'))
     fd = np.loadtxt(os.path.join(run.out, 'fd.csv'), delimiter=',', skiprows=1, ndmin=2)
     T = 1 / F_STRONG
+    assert list(cyc.columns) == list(CYCLE_COLUMNS) + ['Bg']   # the shared schema, then the oedometer's own
+    c = cyc.to_numpy()
     assert list(c[:, 0]) == [1, 2, 3] and s['cycles'] == pytest.approx(3, rel=1e-3)
     np.testing.assert_allclose(c[:, 1], [T, 2 * T, 3 * T], rtol=1e-3)
     for k, t, settlement, resilient in c[:, :4]:
         assert settlement == pytest.approx(np.interp(t, fd[:, 0], fd[:, 2]), abs=1e-3 * s['deltaMax'])
         peak = np.interp((k - 0.5) * T, fd[:, 0], fd[:, 2])
         assert resilient == pytest.approx(peak - settlement, abs=1e-3 * s['deltaMax']) and resilient > 0
-    assert np.all(c[:, 4:6] == 0) and np.all(c[:, 6] == 0)
+    assert (cyc.crushes == 0).all() and (cyc.abrasions == 0).all() and (cyc.nCrushed == 0).all() and (cyc.Bg == 0).all()
+    # the largest stress ratio of a cycle: the largest of its crushing checks' (checks.csv, the crushable grains')
+    chk = pd.read_csv(os.path.join(run.out, 'checks.csv'))
+    for k, ratio in zip(cyc.cycle, cyc.maxStressRatio):
+        within = chk[(chk.t >= (k - 1) * T) & (chk.t <= k * T + 1e-9)]
+        assert ratio == pytest.approx(within.maxCrushableRatio.max(), rel=1e-6)
+    assert (cyc.nGrains == s['nGrainsInitial']).all() and (cyc.cpuSeconds > 0).all()
     later = fd[:, 0] > 0.6 * T
     assert np.min(fd[later, 5]) == pytest.approx(0.2 * FMAX, rel=1e-3)  # the applied force's lower bound
     assert os.path.getsize(os.path.join(run.out, 'cycles.png')) > 0
@@ -401,13 +410,13 @@ def test_fatigue_crushes_grains_that_no_single_cycle_breaks(strong, root):
                     results=os.path.join(root, 'fatigue'), runId='fatigue', packingDir=os.path.join(root, 'packings'),
                     **SMALL)
     s = run.run()
-    c = np.loadtxt(os.path.join(run.out, 'cycles.csv'), delimiter=',', skiprows=1, ndmin=2)
+    c = pd.read_csv(os.path.join(run.out, 'cycles.csv'))
     chk = np.loadtxt(os.path.join(run.out, 'checks.csv'), delimiter=',', skiprows=1, ndmin=2)
     T = 1 / F_STRONG
     s1 = chk[chk[:, 0] < T, 3].max()
     assert s1 == pytest.approx(0.78, rel=0.02)         # the same first half cycle as the strong run
-    assert c[0, 4] == 0                                 # cycle 1: nothing crushed
-    assert c[0, 7] == pytest.approx((1 - s1) * s1 ** 4, rel=1e-5)  # the strength the most loaded grain lost
+    assert c.crushes[0] == 0                            # cycle 1: nothing crushed
+    assert c.maxDamage[0] == pytest.approx((1 - s1) * s1 ** 4, rel=1e-5)  # the strength the most loaded grain lost
     assert s['nCrushed'] >= 1 and s['nFatigueCrushed'] == s['nCrushed']
     with open(os.path.join(run.out, 'grains.csv')) as fh:
         damage = [float(g['damage']) for g in csv.DictReader(fh)]
@@ -445,11 +454,11 @@ def test_a_run_of_cycles_stopped_and_continued_in_a_fresh_process(strong, root, 
     the run's two cycles, and cycles.csv and fd.csv are those of the run that went on (to rounding: YADE
     resumes a saved scene to rounding; no grain crushes here, so nothing amplifies it)."""
     T = 1 / F_STRONG
-    run = Oedometer(f=F_STRONG, ft0=1e12, strength=1e15, cycles=2, Fmin=0.2 * FMAX, saveEvery=T,
+    run = Oedometer(f=F_STRONG, ft0=1e12, strength=1e15, cycles=2, Fmin=0.2 * FMAX, saveEvery=1,
                     results=os.path.join(root, 'stopped'), runId='two', packingDir=os.path.join(root, 'packings'),
                     **SMALL)
     s = run.run()
-    first = [f for f in s['stateFiles'] if f.startswith('state-iter')][0]
+    first = [f for f in s['stateFiles'] if f.startswith('state-cycle')][0]
     script = tmp_path / 'resume.py'
     script.write_text(RESUME_CYCLES)
     p = subprocess.run([shutil.which('yade'), '-n', '-x', str(script), os.path.join(run.out, first),
@@ -457,8 +466,9 @@ def test_a_run_of_cycles_stopped_and_continued_in_a_fresh_process(strong, root, 
                        env=dict(os.environ, OMP_NUM_THREADS='1'), cwd=str(tmp_path))
     assert p.returncode == 0, p.stdout[-3000:] + p.stderr[-3000:]
     out = os.path.join(root, 'continued', 'resumed')
-    a = np.loadtxt(os.path.join(run.out, 'cycles.csv'), delimiter=',', skiprows=1, ndmin=2)
-    b = np.loadtxt(os.path.join(out, 'cycles.csv'), delimiter=',', skiprows=1, ndmin=2)
+    # the CPU time of a cycle is the process's
+    a = pd.read_csv(os.path.join(run.out, 'cycles.csv')).drop(columns='cpuSeconds').to_numpy()
+    b = pd.read_csv(os.path.join(out, 'cycles.csv')).drop(columns='cpuSeconds').to_numpy()
     assert b.shape == a.shape == (2, len(CYCLE_COLUMNS))
     np.testing.assert_allclose(b[:, :2], a[:, :2], rtol=1e-9)
     np.testing.assert_allclose(b[:, 2:4], a[:, 2:4], rtol=0, atol=TOL_RESUME_CYCLES * s['deltaMax'])

@@ -9,7 +9,9 @@ import pytest
 pytest.importorskip('yade')
 from yade import O, utils  # noqa: E402
 
-from ballast.oedometer import check, scene  # noqa: E402
+from ballast.experiments import scene  # noqa: E402
+from ballast.oedometer import check  # noqa: E402
+from ballast.experiments.oedometer.rig import Rig  # noqa: E402
 from ballast.oedometer.loadcurve import eq8, loadCurve  # noqa: E402
 from ballast.oedometer.loading import DisplacementLoad, PlateLoad, ServoLoad  # noqa: E402
 
@@ -38,7 +40,7 @@ def oneGrain(mode, **kw):
     O.bodies[exp.grain].state.blockedDOFs = 'xyXYZ'  # only the axis: the statics are along z
     O.engines = scene.engines(damping=0.2, law=exp.p['law'])
     O.dt = 0.5 * utils.PWaveTimeStep()
-    exp.loading.start(exp.p, scene.Rig(None, ballast, steel))
+    exp.loading.start(exp.p, Rig(None, ballast, steel))
     assert exp.loading.z0 == pytest.approx(2 * R, rel=1e-12)  # seated on the top of the grain
     return exp, floor
 

@@ -20,141 +20,25 @@ A subclass gives ``NAME``, ``Parameters`` (its Parameters class), ``REOPEN_PARAM
 run may change: where and how it reports, not the physics), ``prepare()``, ``summary()``, and its
 state (``state()``, ``fromState()``); its pieces are registered objects of their own. One that declares
 ``resume`` goes on with a killed run (:meth:`Experiment.resumeKilled`) and gives ``resumed(state)``. A cyclic
-experiment offers cycle jumping (``jump``, docs/cycles.md) with :meth:`startJumping` when its cycles start, a
-``jumper`` piece, :meth:`cycleClosed` at each simulated cycle's end and :meth:`jumped` if it counts cycles.
+experiment is also a :class:`ballast.experiments.cyclic.Cyclic` (checkpoints every saveEvery cycles, cycle
+jumping, the cycles.csv schema). The run's folder and the check of a state file: :mod:`.rundir`.
 """
 import gzip
-import json
 import os
-import re
 import shutil
 import socket
 import time
-import zlib
 
 from yade import O
 
 from .. import runtime
 from ..engines import BallastAbrasionEngine, BallastCrushEngine
-from . import chain, grains, timestep
-from .cyclejump import CycleJumper
 from ..names import runDirName
 from ..params import CRUSH, ParamError, requireWritableDir
-from ..runfiles import killedRunState, runStatus, syncDir, writeAtomic
+from ..runfiles import killedRunState, runStatus, syncDir
+from . import chain, timestep
 from .phases import Phases
-
-JUMP_STATE = 'state-jump%04d-%s.yade.gz'   # the states around jump k: 'before' and 'after' it
-JUMP_STATE_NAME = re.compile(r'state-jump(\d+)-(?:before|after)\.yade\.gz')   # the same names, read back
-
-STATUS_FILE = 'run.json'
-JUMPER = 'cycleJumper'   # the label of the callback that makes a planned jump
-
-
-class StateFileError(RuntimeError):
-    """A state file that cannot be loaded: the message names the file and the cause, in one line."""
-
-
-def checkStateFile(path, who='reopen'):
-    """Raise StateFileError naming `path` and what is wrong with it, before O.load meets it (YADE's own errors
-    name neither: 'gzip error', a bare MemoryError). Reads a gzip state through to its end (its CRC)."""
-    def bad(why):
-        raise StateFileError('%s: %s is not a loadable state: %s' % (who, path, why))
-    if not os.path.isfile(path):
-        raise FileNotFoundError('%s: no such state file: %s' % (who, path))
-    size = os.path.getsize(path)
-    if size == 0:
-        bad('the file is empty (0 bytes: a save that was cut off?)')
-    with open(path, 'rb') as fh:
-        magic = fh.read(2)
-    if path.endswith('.gz'):
-        if magic != b'\x1f\x8b':
-            bad('not gzip data (the name ends in .gz, the first bytes are %r)' % magic)
-        try:
-            with gzip.open(path, 'rb') as fh:
-                head = fh.read(64)
-                while fh.read(1 << 22):
-                    pass
-        except EOFError:
-            bad('the gzip data is cut short (%d bytes: a save that was cut off?)' % size)
-        except (OSError, zlib.error) as e:
-            bad('damaged gzip data (%s)' % e)
-    elif path.endswith('.xml'):
-        with open(path, 'rb') as fh:
-            head = fh.read(64)
-    else:
-        return
-    if not (head.lstrip().startswith(b'<?xml') or b'serialization::archive' in head):
-        bad('its content is not a YADE state (neither XML nor a boost archive: it starts with %r)' % head[:16])
-
-
-def processAlive(pid):
-    """True if pid (an int) is a live process of this machine other than this one."""
-    if not isinstance(pid, int) or pid <= 0 or pid == os.getpid():
-        return False
-    try:
-        os.kill(pid, 0)
-    except ProcessLookupError:
-        return False
-    except PermissionError:   # alive, another user's
-        return True
-    return True
-
-
-@runtime.persistent('RunDirectory')
-class RunDirectory:
-    """<results>/<run id>/, created atomically when first needed; an existing one is never reused (a
-    suffix -2, -3, ...). readOnly: never created (a reopened run that is only inspected)."""
-
-    def __init__(self, results, runId, readOnly=False):
-        self.results, self.wanted, self.readOnly = results, runId, readOnly
-        self.runId = self.path = self.previous = None
-
-    def create(self):
-        """The folder's path, made now if it is not yet."""
-        if self.path is not None:
-            return self.path
-        if self.readOnly:
-            raise RuntimeError('this run was reopened read-only (readOnly=True): it writes no files; reopen it with '
-                               'readOnly=False to go on')
-        rid = runDirName(self.wanted or O.tags['d.id'])
-        os.makedirs(self.results, exist_ok=True)
-        for k in range(1, 10000):
-            name = rid if k == 1 else '%s-%d' % (rid, k)
-            path = os.path.join(self.results, name)
-            try:
-                os.mkdir(path)
-            except FileExistsError:
-                continue
-            self.runId, self.path = name, path
-            return path
-        raise RuntimeError('no free run directory for %s in %s' % (rid, self.results))
-
-    def file(self, name):
-        return os.path.join(self.create(), name)
-
-    def goOnIn(self, path):
-        """A killed run that goes on (Experiment.resumeKilled) writes into its own folder, not a new one."""
-        self.path, self.runId = path, os.path.basename(path)
-
-    def writeStatus(self, status, **info):
-        """run.json: the status ('running', 'finished') and what else the experiment says, written atomically."""
-        path = self.file(STATUS_FILE)
-        doc = {}
-        if os.path.exists(path):
-            with open(path) as fh:
-                doc = json.load(fh)
-        doc.update(info, status=status, time=time.strftime('%Y-%m-%d %H:%M:%S'))
-        writeAtomic(path, json.dumps(doc, indent=1) + '\n')
-
-    def state(self):
-        return {'results': self.results, 'wanted': self.wanted, 'runId': self.runId, 'path': self.path}
-
-    @classmethod
-    def fromState(cls, s, ref=None):
-        """A run that goes on never writes into the folder of the run it continues: a new one, named after it."""
-        d = cls(s['results'], s['runId'] or s['wanted'])
-        d.previous = s['path']
-        return d
+from .rundir import RunDirectory, StateFileError, checkStateFile, processAlive
 
 
 class Experiment:
@@ -248,74 +132,6 @@ class Experiment:
                                                iterPeriod=p['abrasionPeriod'], scaledPWaveStep=p.scaledPWaveStep(),
                                                label='abrasion'))
         O.engines = O.engines + extra
-
-    # ------------------------------------------------------------------ cycle jumping (experiments.cyclejump)
-    def startJumping(self):
-        """With jump: the jumper (self.jumper, a piece) and, first in the chain, the callback that makes a jump at
-        the start of the step after the cycle that planned it (where a saved state resumes exactly)."""
-        self.jumper = CycleJumper.of(self.p)
-        if self.jumper is not None:
-            O.engines = [runtime.callback(self, 'jumpNow', iterPeriod=1, dead=True, label=JUMPER)] + list(O.engines)
-            self.adopt()
-
-    def syncJumping(self):
-        """At the start of a load(): jumping as the parameters now say (a run reopened may start, tune or stop it;
-        the cycles jumped stay counted). Returns True if jumping starts now."""
-        if self.jumper is None:
-            if self.p['jump']:
-                self.startJumping()
-                return True
-            return False
-        self.jumper.tune(self.p)
-        return False
-
-    def cycleClosed(self, cycle, settlement, changed):
-        """The experiment's call at the end of each simulated cycle (numbered with the jumped ones), with its
-        permanent settlement [m] and whether a grain crushed or abraded in it: the jumper reads the grains' damage
-        and plans a jump, made at the next step."""
-        ids = [b.id for b in grains.spheres()]
-        if self.jumper.cycleEnded(chain.engine('crush'), ids, cycle, settlement, changed):
-            chain.engine(JUMPER).dead = False
-
-    def jumpNow(self):
-        """The state before, the jump, the state after (state-jump<K>-before/after.yade.gz), jumps.csv."""
-        chain.engine(JUMPER).dead = True
-        k = len(self.jumper.jumps) + 1
-        before, after = JUMP_STATE % (k, 'before'), JUMP_STATE % (k, 'after')
-        self.save(os.path.join(self.out, before))
-        e = self.jumper.apply(chain.engine('crush'), before, after)
-        self.jumped(e['cycles'])
-        self.save(os.path.join(self.out, after))
-        if self.p['jumpStates'] == 'last' and k > 1:
-            self.forgetJumpStates(self.jumper.jumps[-2])
-        self.jumper.writeLog(os.path.join(self.out, 'jumps.csv'))
-        self.say('jump %d: cycles %d -> %d (bound: %s), largest damage rate %.3g a cycle, settlement %+.4f mm '
-                 'extrapolated' % (k, e['cycle'], e['to'], e['limit'], e['maxRate'], 1e3 * e['settlementJumped']))
-
-    def cutJumps(self):
-        """A killed run resumed: jumps.csv back to the jumps of the state it goes on from, and the states the killed
-        process saved around later jumps removed (those jumps are taken again under the same numbers, or not)."""
-        if self.jumper is None:
-            return
-        self.jumper.writeLog(os.path.join(self.out, 'jumps.csv'))
-        for name in os.listdir(self.out):
-            m = JUMP_STATE_NAME.fullmatch(name)
-            if m and int(m.group(1)) > len(self.jumper.jumps):
-                os.remove(os.path.join(self.out, name))
-
-    def forgetJumpStates(self, jump):
-        """Remove the states this run saved around an earlier jump (jumpStates 'last') and their names from its log
-        row; those of the run it continues (another folder) stay."""
-        for key in ('stateBefore', 'stateAfter'):
-            path = os.path.join(self.out, jump[key])
-            if jump[key] and path in self.saved:
-                if os.path.exists(path):
-                    os.remove(path)
-                self.saved.remove(path)
-                jump[key] = ''
-
-    def jumped(self, cycles):
-        """After a jump of `cycles` (subclasses whose own records count cycles move them on)."""
 
     def say(self, msg):
         self.phases.say(msg)

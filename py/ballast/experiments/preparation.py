@@ -8,7 +8,7 @@ from yade.wrapper import Sphere
 
 from .. import runtime
 from . import chain, grains
-from .oedometer import scene
+from . import scene
 
 STIFFEN_TIME = 0.01     # [s] simulated time over which the existing contacts are stiffened to the true modulus
 PREP_DT_SAFETY = 0.5    # [-] O.dt / PWaveTimeStep() while preparing: the sample does not depend on dtSafety

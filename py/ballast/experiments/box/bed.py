@@ -3,24 +3,19 @@ sides; YADE's infinite walls), the bed placed in `layers` layers: each a loose c
 makeCloud, diameters uniform in [dMin, dMax]) falling frictionless onto the layer below, then pressed
 through a plate at layerPressure until it rests; then friction restored and the grains stiffened to
 the true modulus (:mod:`ballast.experiments.preparation`), with the soft modulus prepYoung before."""
-import json
 import math
 import os
-import time
 
 import numpy as np
 from yade import O, Vector3, pack, utils
 
 from ... import runtime
 from ...geometry import meanCubedDiameterVolume, sphereVolume
-from ...runfiles import writeAtomic
-from .. import grains, preparation
-from ..oedometer import scene
+from .. import grains, preparation, sample
+from ..containers import boxWalls
+from ..scene import GRAIN_MASK, engines, materials, rolling
 from .parameters import bedKey
 
-CLOUD_SOLID = 0.3            # [-] solid fraction of a falling cloud: grains fall freely
-PRESS_STILL = (0.03, 1e-5)   # ([s], [m]): a press ends when its plate moved less than this over that time
-PRESS_TIME = (0.05, 1.0)     # [s] shortest and longest press of a layer
 PLATE_THICKNESS = 0.02       # [m] the press plate's mass: steel of this thickness over the box
 
 
@@ -44,36 +39,7 @@ class Rig:
 
 def walls(p, steel):
     """The floor at z = 0 and the four side walls of the box centred on the z axis."""
-    L, W = p['boxLength'], p['boxWidth']
-    kw = dict(material=steel, color=scene.STEEL_COLOR, mask=scene.STEEL_MASK)
-    return [O.bodies.append(utils.wall(0.0, axis=2, sense=1, **kw)),
-            O.bodies.append(utils.wall(-L / 2, axis=0, sense=1, **kw)),
-            O.bodies.append(utils.wall(L / 2, axis=0, sense=-1, **kw)),
-            O.bodies.append(utils.wall(-W / 2, axis=1, sense=1, **kw)),
-            O.bodies.append(utils.wall(W / 2, axis=1, sense=-1, **kw))]
-
-
-def cloud(p, seed, vSolid, zBottom):
-    """Grains of total volume vSolid [m^3] in a loose cloud over the whole box above zBottom [m]."""
-    rMin, rMax = p['dMin'] / 2, p['dMax'] / 2
-    gap = 0.05 * p['dMin']
-    a, b = p['boxLength'] / 2 - rMax - gap, p['boxWidth'] / 2 - rMax - gap
-    z0 = zBottom + rMax + gap
-    h = 1.5 * vSolid / (CLOUD_SOLID * 4 * a * b)   # makeCloud falls short of CLOUD_SOLID between close walls
-    num = int(math.ceil(1.2 * vSolid / meanCubedDiameterVolume(p['dMin'], p['dMax'])))
-    for attempt in range(6):
-        sp = pack.SpherePack()
-        made = sp.makeCloud((-a, -b, z0), (a, b, z0 + h), rMean=(rMin + rMax) / 2, rRelFuzz=(rMax - rMin) / (rMax + rMin),
-                            num=num, seed=seed)
-        if made == num:
-            break
-        h *= 1.3
-    else:
-        raise RuntimeError('cloud: makeCloud placed %d of %d grains' % (made, num))
-    kept = sorted((c[2], c[0], c[1], r) for c, r in sp)   # the lowest first, until vSolid
-    z, x, y, r = (np.array(v) for v in zip(*kept))
-    n = min(len(r), int(np.searchsorted(np.cumsum(sphereVolume(r)), vSolid)) + 1)
-    return np.column_stack([x[:n], y[:n], z[:n]]), r[:n], float(np.max(z[:n] + r[:n]))
+    return boxWalls(p['boxLength'], p['boxWidth'], steel)
 
 
 def folder(p):
@@ -86,52 +52,38 @@ def prepare(exp):
     the same run. Returns (Rig, bed height [m], porosity [-], grains that escaped, the stored file)."""
     p = exp.p
     keys, name = bedKey(p)
-    path = os.path.join(folder(p), name)
-    if not (p['reuseBed'] and os.path.exists(path)):
-        rig, top, porosity, escaped = build(exp)
-        x, r = grains.arrays()[:2]
-        os.makedirs(folder(p), exist_ok=True)
-        doc = {'key': keys, 'created': time.strftime('%Y-%m-%dT%H:%M:%S'), 'runId': exp.runId, 'top': top,
-               'porosity': porosity, 'escaped': escaped, 'steps': dict(exp.phases.steps),
-               'grains': [[repr(float(v)) for v in (xi[0], xi[1], xi[2], ri)] for xi, ri in zip(x, r)]}
-        writeAtomic(path, json.dumps(doc))   # concurrent runs of one seed never see half a file
-        exp.phases.say('bed: %d grains saved to %s' % (len(r), path))
-    else:
-        exp.phases.say('bed: reusing %s' % path)
-    with open(path) as fh:
-        doc = json.load(fh)
+
+    def build():
+        top, porosity, escaped = buildBed(exp)
+        return {'top': top, 'porosity': porosity, 'escaped': escaped}
+    path, doc, _ = sample.stored(exp, folder(p), keys, name, p['reuseBed'], build, 'bed')
     exp.newScene()
-    ballast, steel = scene.materials(p, p['young'])
+    ballast, steel = materials(p, p['young'])
     rig = Rig(walls(p, steel), ballast, steel)
-    O.engines = scene.engines(p['damping'], p['law'], scene.rolling(p))
-    for g in doc['grains']:
-        x, y, z, r = (float(v) for v in g)
-        O.bodies.append(utils.sphere((x, y, z), r, material=ballast, mask=scene.GRAIN_MASK))
-    O.dt = p['dtSafety'] * utils.PWaveTimeStep()
-    # contacts re-form with the stored overlaps; only the shear and rolling history is lost: let it settle
-    exp.phases.run('settle', lambda: grains.unbalanced() < 0.01, tEnd=O.time + 0.01, checkEvery=100)
+    sample.reload(exp, doc, ballast, p['damping'])
     return rig, doc['top'], doc['porosity'], doc['escaped'], path
 
 
-def build(exp):
-    """The box, the bed in layers, friction and stiffness restored; returns (Rig, the bed's height [m] under
-    the last press, its porosity [-], the grains that left the box)."""
+def buildBed(exp):
+    """The box, the bed in layers, friction and stiffness restored; returns (the bed's height [m] under the last
+    press, its porosity [-], the grains that left the box)."""
     p = exp.p
     exp.newScene()
-    ballast, steel = scene.materials(p, p['prepYoung'])
+    ballast, steel = materials(p, p['prepYoung'])
     ballast.frictionAngle = p['depFriction']
     rig = Rig(walls(p, steel), ballast, steel)
-    O.engines = scene.engines(p['prepDamping'], p['law'], scene.rolling(p))
+    O.engines = engines(p['prepDamping'], p['law'], rolling(p))
     area, top = p['boxLength'] * p['boxWidth'], 0.0
+    shape = sample.BoxShape(p['boxLength'], p['boxWidth'])
     for k in range(p['layers']):
-        pos, rad, cloudTop = cloud(p, p['seed'] * 100 + k, p['solidFraction'] * area * p['bedDepth'] / p['layers'], top)
-        for c, r in zip(pos, rad):
-            O.bodies.append(utils.sphere(tuple(c), float(r), material=ballast, mask=scene.GRAIN_MASK))
+        pos, rad, cloudTop = sample.cloud(shape, p['dMin'], p['dMax'], p['solidFraction'] * area * p['bedDepth'] /
+                                          p['layers'], p['seed'] * 100 + k, top)
+        sample.place(pos, rad, ballast)
         if k == 0:
             O.dt = preparation.PREP_DT_SAFETY * utils.PWaveTimeStep()
         tFall = math.sqrt(2 * (cloudTop - top) / 9.81)
         exp.phases.say('layer %d of %d: %d grains falling from up to %.3f m' % (k + 1, p['layers'], len(rad), cloudTop))
-        exp.phases.run('deposit', tEnd=O.time + tFall, simSpan=tFall, simStart=O.time, extra=grains.restInfo)
+        sample.deposit(exp, tFall)
         top = press(exp, rig, p['layerPressure'] * area)
         exp.phases.say('layer %d pressed at %.3g kPa: top at %.4f m' % (k + 1, p['layerPressure'] / 1e3, top))
     escaped = [b.id for b in grains.spheres() if not inside(p, b.state.pos)]
@@ -143,7 +95,7 @@ def build(exp):
     exp.phases.run('settle', lambda: grains.unbalanced() < 0.02, tEnd=O.time + 0.05, extra=grains.restInfo)
     r = grains.arrays()[1]
     porosity = 1 - float(np.sum(sphereVolume(r))) / (area * top)
-    return rig, top, porosity, len(escaped)
+    return top, porosity, len(escaped)
 
 
 def inside(p, x):
@@ -154,18 +106,7 @@ def press(exp, rig, force):
     """A steel plate over the whole box pressed with `force` [N] onto the layer until it rests; removed
     after. Returns the height of its underside [m] at rest."""
     p = exp.p
-    x, r, _ = grains.arrays()
-    plate = utils.wall(float(np.max(x[:, 2] + r)), axis=2, sense=-1, material=rig.steel, mask=scene.STEEL_MASK)
-    plate.state.blockedDOFs = 'xyXYZ'
-    plate.state.mass = p['steelDensity'] * p['boxLength'] * p['boxWidth'] * PLATE_THICKNESS
-    plate.state.inertia = Vector3(1, 1, 1)  # a wall has none; its rotations are blocked, but Newton divides by it
-    plate.dynamic = True
-    pid = O.bodies.append(plate)
-    O.forces.setPermF(pid, Vector3(0, 0, -force))
-    t0 = O.time
-    exp.phases.run('press', preparation.still(pid, *PRESS_STILL, after=t0 + PRESS_TIME[0], unbalanced=0.01),
-                   tEnd=t0 + PRESS_TIME[1],
-                   extra=lambda: 'plate at %.4f m  %s' % (O.bodies[pid].state.pos[2], grains.restInfo()))
+    pid = sample.press(exp, rig.steel, p['steelDensity'] * p['boxLength'] * p['boxWidth'] * PLATE_THICKNESS, force)
     top = float(O.bodies[pid].state.pos[2])
     O.forces.setPermF(pid, Vector3(0, 0, 0))   # a permanent force outlives its body in the force container
     O.bodies.erase(pid)
@@ -190,7 +131,7 @@ def crib(exp, zBase):
     for sign in (-1, 1):
         x0, x1 = sorted((sign * (w / 2 + rMax + gap), sign * (L / 2 - rMax - gap)))
         vSolid = p['solidFraction'] * side * W * p['cribDepth']
-        h = 1.5 * vSolid / (CLOUD_SOLID * (x1 - x0) * (W - 2 * (rMax + gap)))
+        h = 1.5 * vSolid / (sample.CLOUD_SOLID * (x1 - x0) * (W - 2 * (rMax + gap)))
         sp = pack.SpherePack()
         sp.makeCloud((x0, -W / 2 + rMax + gap, top), (x1, W / 2 - rMax - gap, top + h), rMean=(p['dMin'] + p['dMax']) / 4,
                      rRelFuzz=(p['dMax'] - p['dMin']) / (p['dMax'] + p['dMin']),
@@ -201,7 +142,7 @@ def crib(exp, zBase):
         for z, x, y, r in kept:
             if vol >= vSolid:
                 break
-            O.bodies.append(utils.sphere((x, y, z), r, material=exp.rig.ballast, mask=scene.GRAIN_MASK))
+            O.bodies.append(utils.sphere((x, y, z), r, material=exp.rig.ballast, mask=GRAIN_MASK))
             vol += float(sphereVolume(r))
             n += 1
     tFall = math.sqrt(2 * (top + h - zBase) / 9.81)

@@ -15,128 +15,34 @@ deflection as the largest settlement of the cycle less that.
 """
 import math
 import os
-import time
 
 import numpy as np
 from yade import O, Vector3, plot, utils
 from yade.wrapper import FrictMat, InterpolatingDirectedForceEngine
 
 from ... import runtime
-from ...engines import BallastAbrasionEngine, BallastCrushEngine
 from ...params import CYCLE_JUMP, requireWritableDir, validate
-from .. import chain, grains, preparation, timestep
+from .. import chain, grains, preparation, scene, timestep
 from ..base import Experiment
-from ..oedometer import scene
+from ..cyclic import Cyclic
 from . import bed, outputs
 from .parameters import OWNER, PARAMS, BoxParameters
+from .recorder import LOAD, Recorder
 
-LOAD, RECORDER, SAVER = 'boxLoad', 'boxRecorder', 'boxSaver'
+RECORDER, FRAMES = 'boxRecorder', 'boxFrames'
 SEAT_STILL = (0.01, 2e-6)     # ([s], [m]): seated when the sleeper moved less than this over that time
 SEAT_TIME = (0.02, 0.2)       # [s] shortest and longest seating (a bed of spheres creeps under a sleeper: docs/box.md)
 SLEEPER_STIFFNESS_MARGIN = 2.0  # [-] densityStep: the sleeper's contacts may stiffen this much as grains crush
 
 
-@runtime.persistent('BoxRecorder')
-class Recorder:
-    """Samples the sleeper and the engines `samples` times a cycle (a callback at simulated times) and closes
-    a row of cycles.csv at each cycle's end: the permanent settlement (at the seating load), the resilient
-    deflection, the work of the load over the cycle, crushes and abrasions, the largest fatigue damage."""
-
-    COLUMNS = ('t', 'cycle', 'F', 'Fgrains', 'settlement', 'tilt', 'nCrushed', 'nAbraded', 'maxStressRatio')
-    CYCLE_COLUMNS = ('cycle', 't', 'settlement', 'settlementPeak', 'resilient', 'work', 'crushes', 'abrasions',
-                     'nCrushed', 'nAbraded', 'maxDamage', 'maxStressRatio', 'nGrains', 'tilt', 'cpuSeconds')
-
-    def __init__(self, sleeper=None, z0=None, t0=None, period=None):
-        self.sleeper, self.z0, self.t0, self.period = sleeper, z0, t0, period
-        # the rows of the current cycle (samples.csv holds them all: BoxTest.sample appends each), of cycles.csv;
-        # a saved state keeps only the current cycle's, so it stays small over thousands of cycles
-        self.samples, self.cycles = [], []
-        self.start = None                    # index in samples of the current cycle's first row
-        self.cpu = None                      # process CPU [s] at the current cycle's start (not saved: per process)
-        self.jumped = 0                      # cycles advanced by cycle jumping, not simulated (docs/cycles.md)
-
-    def state(self):
-        return {k: getattr(self, k) for k in ('sleeper', 'z0', 't0', 'period', 'samples', 'cycles', 'start', 'jumped')}
-
-    def restored(self):
-        """After a restore: the open cycle's CPU counted from here (a process's clock does not carry over; it was
-        left out, NaN, in the first cycle of every slice and reopened run)."""
-        if self.start is not None:
-            self.cpu = time.process_time()
-
-    @classmethod
-    def fromState(cls, s, ref=None):
-        r = cls()
-        for k, v in s.items():
-            setattr(r, k, v)
-        return r
-
-    def underside(self):
-        """Height of the sleeper's underside [m] at its centre."""
-        b = O.bodies[self.sleeper]
-        return b.state.pos[2] - b.shape.extents[2]
-
-    def tilt(self):
-        """The sleeper's rotation about y [rad]."""
-        q = O.bodies[self.sleeper].state.ori
-        axis, angle = q.toAxisAngle()
-        return float(angle * axis[1])
-
-    def applied(self):
-        return -chain.engine(LOAD).force[2]
-
-    def grainsForce(self):
-        """Upward force of the grains on the sleeper [N]: its force container holds the contacts and the applied load."""
-        return O.forces.f(self.sleeper)[2] + self.applied()
-
-    def cycle(self):
-        """Whole cycles since cycling began (a sample at a cycle's end belongs to the cycle it ends)."""
-        return int(math.floor((O.time - self.t0) / self.period + 1e-6)) + self.jumped
-
-    def jump(self, cycles):
-        """`cycles` more cycles counted as done without being simulated: the current cycle's rows move with them."""
-        self.jumped += cycles
-        for row in self.samples[self.start:]:
-            row[1] += cycles
-
-    def sample(self):
-        """A row of samples.csv; returns the cycle it closed, or 0."""
-        counts = [sum(getattr(e, k) for e in O.engines if isinstance(e, kind)) for kind, k in
-                  ((BallastCrushEngine, 'nCrushed'), (BallastAbrasionEngine, 'nAbraded'))]
-        crush = [e for e in O.engines if isinstance(e, BallastCrushEngine)]
-        ratio = max([e.maxCrushableRatio for e in crush], default=math.nan)   # at the engine's last check
-        row = [O.time - self.t0, self.cycle(), self.applied(), self.grainsForce(), self.z0 - self.underside(),
-               self.tilt()] + counts + [ratio]
-        self.samples.append(row)
-        if self.start is None:
-            self.start, self.cpu = len(self.samples) - 1, time.process_time()
-        elif row[1] > self.samples[self.start][1]:   # a cycle ended at this sample: it opens the next one
-            self.closeCycle(len(self.samples) - 1)
-            self.samples, self.start = self.samples[-1:], 0
-            return int(row[1])
-        return 0
-
-    def closeCycle(self, end):
-        rows = np.array(self.samples[self.start:end + 1], dtype=float)
-        F, s = rows[:, 2], rows[:, 4]
-        crush = [e for e in O.engines if isinstance(e, BallastCrushEngine)]
-        n = int(rows[-1, 1])
-        self.cycles.append([n, rows[-1, 0], s[-1], float(np.max(s)), float(np.max(s) - s[-1]),
-                            float(np.sum(0.5 * (F[1:] + F[:-1]) * np.diff(s))),
-                            int(rows[-1, 6] - rows[0, 6]), int(rows[-1, 7] - rows[0, 7]), int(rows[-1, 6]),
-                            int(rows[-1, 7]), max([e.maxDamage for e in crush], default=0.0),
-                            float(np.max(rows[:, 8])) if crush else math.nan, len(grains.spheres()),
-                            rows[-1, 5], time.process_time() - self.cpu if self.cpu is not None else math.nan])
-        self.cpu = time.process_time()
-
-
 @runtime.persistent('BoxTest')
-class BoxTest(Experiment):
+class BoxTest(Cyclic, Experiment):
     """A sleeper section on a crushable ballast bed in a box under repeated loads. Keyword arguments: any
     parameter of :data:`ballast.experiments.box.parameters.PARAMS`, or parameters=check(...)."""
 
     NAME = 'box'
     Parameters = BoxParameters
+    SAVER = 'boxSaver'   # the checkpoint callback's label in the states box tests have saved (records go on from them)
     # where and how it reports, and how its cycles are simulated (cycle jumping)
     # bedDir: a reopened run has its bed; where beds are stored (another machine's path) changes nothing in it
     REOPEN_PARAMS = ('results', 'runId', 'progress', 'vtk', 'cycles', 'saveEvery', 'continueFrom', 'resume',
@@ -214,9 +120,7 @@ class BoxTest(Experiment):
         load.times, load.magnitudes = [rec.t0 + t for t in times], forces
         O.engines = O.engines + [runtime.callback(self, 'sample', virtPeriod=history.period / p['samples'],
                                                   virtLast=rec.t0, initRun=True, label=RECORDER)]
-        if p['saveEvery'] > 0:   # first in the chain: a state saved before the step begins resumes exactly
-            O.engines = [runtime.callback(self, 'checkpoint', iterPeriod=1, dead=True, label=SAVER)] + list(O.engines)
-        self.startJumping()
+        self.startCycles(rec.t0, history.period)
         plot.reset()
         plot.plots = {'settlement': ('F',)}   # YADE's live plot: the load against the settlement
         if p['densityStep'] > 0:
@@ -231,8 +135,7 @@ class BoxTest(Experiment):
                         'masses': m.tolist(), 'zBase': rec.z0, 'ids': [b.id for b in grains.spheres()]}
         self.gradings = [outputs.grading(self, 0)]
         self.frames = []
-        if p['vtk']:
-            outputs.writeFrame(self, 0)
+        self.startFrames()
         self.save(os.path.join(self.out, 'state-start.yade.gz'))
 
     def sample(self):
@@ -251,27 +154,30 @@ class BoxTest(Experiment):
             outputs.writeCycles(self)   # a killed run keeps its cycles (written atomically)
             if outputs.gradedCycle(k):
                 self.grade(k)
-            if self.p['saveEvery'] and k % self.p['saveEvery'] == 0:
-                chain.engine(SAVER).dead = False   # wakes at the start of the next step
-            if self.jumper is not None:
-                row = dict(zip(Recorder.CYCLE_COLUMNS, self.recorder.cycles[-1]))
-                self.cycleClosed(k, row['settlement'], row['crushes'] + row['abrasions'] > 0)
-
-    def checkpoint(self):
-        """The saver's call (saveEvery), at the start of the step after a cycle closed: a state to reopen a long
-        run from, exactly where it was."""
-        chain.engine(SAVER).dead = True
-        self.save(os.path.join(self.out, 'state-cycle%07d.yade.gz' % self.cyclesDone()))
+            row = dict(zip(Recorder.CYCLE_COLUMNS, self.recorder.cycles[-1]))
+            self.cycleDone(k, row['settlement'], row['crushes'] + row['abrasions'] > 0)
 
     def jumped(self, cycles):
         self.recorder.jump(cycles)
 
     def grade(self, k):
-        """The grading (and with vtk a frame) after cycle k, once."""
+        """The grading after cycle k, once."""
         if all(g['cycle'] != k for g in self.gradings):
             self.gradings.append(outputs.grading(self, k))
-            if self.p['vtk']:
-                outputs.writeFrame(self, k)
+
+    def startFrames(self):
+        """With vtk: a VTK frame now and every vtk load cycles (a callback at simulated times from the start of
+        cycling; a run reopened with vtk gets it then)."""
+        p, rec = self.p, self.recorder
+        if p['vtk'] > 0 and chain.engine(FRAMES) is None:
+            self.frame()
+            O.engines = O.engines + [runtime.callback(self, 'frame', virtPeriod=p['vtk'] * rec.period,
+                                                      virtLast=O.time, label=FRAMES)]
+
+    def frame(self):
+        """A frame of boxes.pvd (outputs.writeFrame), once at a time."""
+        if not self.frames or self.frames[-1][0] < O.time - self.recorder.t0:
+            outputs.writeFrame(self)
 
     def cyclesDone(self):
         """Cycles done: those simulated (a row each) and those jumped over."""
@@ -291,6 +197,7 @@ class BoxTest(Experiment):
             self.markRunning(continues=self.dir.previous)
             self.say('run %s goes on from %s -> %s' % (self.runId, self.dir.previous, self.out))
         self.syncJumping()
+        self.startFrames()
         self.target = self.cyclesDone() + n
         return self.goOnToEnd()
 
@@ -312,6 +219,8 @@ class BoxTest(Experiment):
                               rec.samples[-1][6] if rec.samples else 0, rec.samples[-1][7] if rec.samples else 0))
         k = self.cyclesDone()
         self.grade(k)
+        if p['vtk'] > 0:
+            self.frame()   # the last
         self.save(os.path.join(self.out, 'state-end.yade.gz'))
         s = outputs.write(self)
         self.markFinished(summary='summary.json')

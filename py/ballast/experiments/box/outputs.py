@@ -17,7 +17,7 @@
 * summary.json   the run: settlement, resilient deflection, crushes, where they were, the mass ledger, CPU
 * settlement.png settlement and resilient deflection against N (log N); breakage.png the crushes over the
                  box's section with the sleeper; grading.png the gradings
-* boxes.pvd      with vtk: grains, contacts and the sleeper and box at the graded cycles (ParaView)
+* boxes.pvd      with vtk: grains, contacts and the sleeper and box every vtk cycles and at the end (ParaView)
 """
 import json
 import math
@@ -30,9 +30,8 @@ from yade import O
 from ... import grading as gr
 from ...engines import BallastAbrasionEngine, BallastCrushEngine
 from ...runfiles import saveFigure, strictJson, writeAtomic
-from .. import grains
-from ...settlementlaws import settlementJumped
-from ..oedometer.outputs import _array, _unstructured, writeContactsVtu, writePvd
+from .. import cyclic, grains
+from ..vtk import dataArray, unstructuredGrid, writeContactsVtu, writePvd
 from . import zones
 
 
@@ -78,15 +77,14 @@ def crushes(exp):
     return df
 
 
+OWN_COLUMNS = ('settlementPeak', 'work', 'tilt')   # cycles.csv beyond the shared ones: the deepest settlement [m],
+#                                                   the work of the load [J] over the cycle, the sleeper's tilt [rad]
+
+
 def cycleTable(exp):
-    """cycles.csv as a DataFrame; with cycle jumping, the cycles jumped before each row and the settlement
-    extrapolated over them."""
-    rec, j = exp.recorder, exp.jumper
-    cyc = pd.DataFrame(rec.cycles, columns=rec.CYCLE_COLUMNS)
-    if j is not None:
-        cyc['jumped'] = cyc.cycle.astype(int) - np.arange(1, len(cyc) + 1)
-        cyc['settlementJumped'] = settlementJumped(cyc.cycle, cyc.settlement, cyc.crushes + cyc.abrasions > 0)
-    return cyc
+    """cycles.csv as a DataFrame (the shared schema, experiments.cyclic, then OWN_COLUMNS)."""
+    rec = exp.recorder
+    return cyclic.table([dict(zip(rec.CYCLE_COLUMNS, row)) for row in rec.cycles], OWN_COLUMNS, exp.jumper)
 
 
 def summary(exp):
@@ -119,19 +117,8 @@ def summary(exp):
         'gradings': [{k: g[k] for k in ('cycle', 'Bg', 'Br', 'BBI')} for g in exp.gradings],
         'dt': O.dt, 'steps': O.iter, 'wallSeconds': wall, 'cpuSeconds': cpu,
         'cpuSecondsPerCycle': float(np.nanmedian(cyc.cpuSeconds)) if n and cyc.cpuSeconds.notna().any() else math.nan,
-        'stepsPerCycle': rec.period / O.dt, **jumpSummary(exp, cyc),
+        'stepsPerCycle': rec.period / O.dt, **cyclic.jumpSummary(cyc, exp.jumper),
         **({'stoppedBy': 'sleeperOnFloor'} if exp.onFloor else {})}
-
-
-def jumpSummary(exp, cyc):
-    """With cycle jumping: the cycles reached, simulated and jumped, the jumps, the extrapolated settlement."""
-    j = exp.jumper
-    if j is None:
-        return {}
-    s, sj = (float(cyc.settlement.iloc[-1]), float(cyc.settlementJumped.iloc[-1])) if len(cyc) else (0.0, 0.0)
-    return {'cycles': int(cyc.cycle.iloc[-1]) if len(cyc) else 0, 'cyclesSimulated': len(cyc),
-            'cyclesJumped': int(exp.recorder.jumped), 'jumps': len(j.jumps), 'settlementJumped': sj,
-            'settlementTotal': s + sj}
 
 
 def appendSample(exp, row):
@@ -155,7 +142,7 @@ def cutSamples(exp, t):
 
 
 def writeCycles(exp):
-    writeAtomic(os.path.join(exp.out, 'cycles.csv'), cycleTable(exp).to_csv(index=False, float_format='%.9g'))
+    cyclic.write(os.path.join(exp.out, 'cycles.csv'), cycleTable(exp))
 
 
 def write(exp):
@@ -221,15 +208,16 @@ def figures(exp, files):
     saveFigure(fig, os.path.join(out, 'grading.png'))
 
 
-def writeFrame(exp, cycle):
-    """VTK files of the grains, the contacts and the sleeper and box at this cycle; a frame of boxes.pvd."""
+def writeFrame(exp):
+    """VTK files of the grains, the contacts and the sleeper and box now (named by the step); a frame of boxes.pvd,
+    written again with it (a killed run keeps its series)."""
     out = os.path.join(exp.out, 'vtk')
     os.makedirs(out, exist_ok=True)
     x, r, m = grains.arrays()
     n = len(r)
-    names = ['grains-%06d.vtu' % cycle, 'contacts-%06d.vtu' % cycle, 'sleeper-%06d.vtu' % cycle]
-    _unstructured(os.path.join(out, names[0]), x, np.arange(n), np.arange(1, n + 1), np.ones(n, dtype=int),
-                  _array('radius', r) + _array('mass', m))
+    names = ['%s-%09d.vtu' % (part, O.iter) for part in ('grains', 'contacts', 'sleeper')]
+    unstructuredGrid(os.path.join(out, names[0]), x, np.arange(n), np.arange(1, n + 1), np.ones(n, dtype=int),
+                  dataArray('radius', r) + dataArray('mass', m))
     writeContactsVtu(os.path.join(out, names[1]))
     b = O.bodies[exp.rig.sleeper]
     e = b.shape.extents
@@ -238,5 +226,6 @@ def writeFrame(exp, cycle):
     L, W = exp.p['boxLength'] / 2, exp.p['boxWidth'] / 2
     floor = [(-L, -W, 0), (L, -W, 0), (L, W, 0), (-L, W, 0)]
     pts = np.array([tuple(c) for c in corners] + floor)
-    _unstructured(os.path.join(out, names[2]), pts, list(range(12)), [8, 12], [12, 9])   # VTK_HEXAHEDRON, VTK_QUAD
+    unstructuredGrid(os.path.join(out, names[2]), pts, list(range(12)), [8, 12], [12, 9])   # VTK_HEXAHEDRON, VTK_QUAD
     exp.frames.append([O.time - exp.recorder.t0] + ['vtk/' + k for k in names])
+    writePvd(os.path.join(exp.out, 'boxes.pvd'), exp.frames)

@@ -11,6 +11,7 @@ import os
 from ...params import (CYCLE_JUMP, INT32_MAX, NUMBER_NONNEGATIVE, NUMBER_POSITIVE, Param, Parameters, anyText, between,
                        boolean, checkCycleJump, checkDensityStep, flag, intBetween, nonNegative, positive, positiveInt, text)
 from ..oedometer.parameters import PARAMS as OEDOMETER, checkRolling
+from ..cycleparams import PARAMS as CYCLE_OUTPUTS
 from .loadhistory import LoadHistory, LoadHistoryError
 
 OWNER = 'BoxTest'
@@ -68,21 +69,16 @@ PARAMS = dict({
     'continueFrom': Param('', 'path', 'a state a box test saved (state-end or state-cycle<N>.yade.gz): go on from it '
                           'for `cycles` more cycles, into this run\'s folder (a long run in slices; the physics must be '
                           'the saved run\'s: a difference is refused, naming the parameter)', anyText, 'a path', text),
-    'saveEvery': Param(0, 'cycles', 'besides the states at the start and the end, save the state every saveEvery cycles '
-                       '(state-cycle<N>.yade.gz: BoxTest.reopen goes on from it; 0 = only those two)', intBetween(0, 10 ** 9),
-                       'an integer >= 0'),
     'resume': Param(False, '-', 'go on with the run killed in <results>/<runId> (run.json "running") from the last state '
                     'it saved (saveEvery), in its folder, to the end it was going to; with no such run, start afresh '
                     '(docs/box.md, "A killed run goes on")', boolean, '0 or 1', flag),
-    'vtk': Param(False, '-', 'VTK frames (grains, contacts, the sleeper and the box) at the cycles the grading is read '
-                 '(boxes.pvd)', boolean, '0 or 1', flag),
 }, **{k: OEDOMETER[k] for k in (
     'dMin', 'dMax', 'young', 'poisson', 'friction', 'density', 'steelYoungRatio', 'steelPoisson', 'steelDensity', 'law',
     'rollingStiffness',
     'prepYoung', 'prepDamping', 'depFriction', 'damping', 'dtSafety', 'timeStep', 'densityStep',
     'crush', 'ft0', 'm', 'pattern', 'rMin', 'criterion', 'weibullModulus', 'keep', 'growTime', 'maxPerCheck', 'fatigue',
     'fatigueExponent', 'fatigueEndurance', 'fatigueHysteresis', 'Tc', 'abrasion', 'strength', 'gamma',
-    'abrasionPeriod', 'lostAsFines', 'results', 'runId', 'progress')}, **CYCLE_JUMP)
+    'abrasionPeriod', 'lostAsFines', 'results', 'runId', 'progress')}, **CYCLE_JUMP, **CYCLE_OUTPUTS)
 
 
 # What decides a bed: these parameters and the version of its preparation (bump it whenever bed.build changes:

@@ -5,8 +5,8 @@
     run.prepare(); run.load(); run.summary()
 
 Modules: :mod:`.declaration` (what a study needs), :mod:`.parameters` (every parameter, declared once)
-and :mod:`.loadcurve` (eq. 8 and its cycles), all without YADE; :mod:`.scene` (the cylinder, the
-materials, the engine chain, the Rig), :mod:`.packing` (the sample), :mod:`.loading` (the load on a
+and :mod:`.loadcurve` (eq. 8 and its cycles), all without YADE; :mod:`.rig` (the cylinder and the
+materials the loading uses), :mod:`.packing` (the sample, on the shared builder :mod:`..sample`), :mod:`.loading` (the load on a
 plate), :mod:`.probe` (what the outputs read), :mod:`.outputs` (files, VTK, yade.plot),
 :mod:`.experiment` (Oedometer), :mod:`.commandline` (``yade scripts/oedometer.py``).
 """
@@ -14,7 +14,7 @@ from .loadcurve import eq8, loadCurve
 from .parameters import PARAMS, check, packingKey
 
 _YADE = {'Oedometer': 'experiment', 'StoredPacking': 'packing', 'PlateLoad': 'loading', 'ServoLoad': 'loading',
-         'DisplacementLoad': 'loading', 'Outputs': 'outputs', 'Probe': 'probe', 'Rig': 'scene'}
+         'DisplacementLoad': 'loading', 'Outputs': 'outputs', 'Probe': 'probe', 'Rig': 'rig'}
 
 __all__ = ['PARAMS', 'check', 'eq8', 'loadCurve', 'packingKey'] + list(_YADE)
 

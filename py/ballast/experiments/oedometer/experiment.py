@@ -38,18 +38,20 @@ from ...runfiles import runStatus, writeAtomic
 from .. import chain, grains
 from .. import timestep
 from ..base import Experiment
+from .. import cyclic
+from ..cyclic import Cyclic
 from .loading import MODES
 from .outputs import Outputs
 from .packing import StoredPacking
 from .parameters import OWNER, PARAMS, OedometerParameters
 from .probe import Probe, counter, degradingEngines, engine
 
-SAVER, CONTAINMENT, JUMP_CYCLE = 'oedoSaver', 'oedoContainment', 'oedoJumpCycle'
+CONTAINMENT, CYCLE_CLOSED = 'oedoContainment', 'oedoJumpCycle'
 PLATE_STIFFNESS_MARGIN = 2.0  # [-] densityStep: the plate's contacts may stiffen this much as grains crush under it
 
 
 @runtime.persistent('Oedometer')
-class Oedometer(Experiment):
+class Oedometer(Cyclic, Experiment):
     """One realization of the paper's oedometric test. Keyword arguments: any parameter of
     :data:`ballast.oedometer.parameters.PARAMS` (a bad value raises ParamError here) or
     ``parameters=check(...)`` (checked already), and the pieces ``packing``, ``load``, ``outputs``."""
@@ -66,6 +68,7 @@ class Oedometer(Experiment):
         self.loading = load
         self.maxProtrusion, self.nEscaped = 0.0, 0
         self.jumper = None           # cycle jumping (jump): experiments.cyclejump
+        self.lastClosed = 0          # the last cycle handed to cycleDone
         self.stoppedBy = None        # why the last load() ended: 'cycles', 'stopAt', 'quiet' or 'force'
         Experiment.__init__(self, parameters, **params)
         if self.loading is None:
@@ -115,6 +118,7 @@ class Oedometer(Experiment):
             self.startLoading()
         if self.syncJumping():   # a run reopened with jump
             self.probe.jumper = self.jumper
+        if chain.engine(CYCLE_CLOSED) is None:   # a state saved before every run read its closed cycles
             self.readCycles()
         t0 = self.loading.t0
         done = math.floor((O.time - t0 + 0.5 * O.dt) / self.T) + self.cyclesJumped()
@@ -138,22 +142,29 @@ class Oedometer(Experiment):
         return self.finish()
 
     def readCycles(self):
-        """The jumper's callback after outputs.cycleEnd, which closes the cycle's row, at the same steps."""
+        """The callback after outputs.cycleEnd, which closes the cycle's row, at the same steps: the cycle closed
+        goes to the checkpoints and the jumper (cyclic.Cyclic.cycleDone)."""
         rows = chain.engine(self.outputs.CYCLES)
         O.engines = O.engines + [runtime.callback(self, 'cycleEnded', virtPeriod=self.T, virtLast=rows.virtLast,
-                                                  label=JUMP_CYCLE)]
+                                                  label=CYCLE_CLOSED)]
 
     def cyclesJumped(self):
         """Cycles advanced by cycle jumping, not simulated (0 without jump)."""
         return self.jumper.jumped if self.jumper is not None else 0
 
-    def cycleEnded(self):
-        """Cycle jumping, after outputs.cycleEnd at each cycle's end: the row just closed goes to the jumper."""
+    def cyclesDone(self):
+        """Cycles closed, simulated and jumped."""
         rows = self.outputs.cycleRows
-        if not rows or (self.jumper.direct and self.jumper.direct[-1][0] >= rows[-1][0]):
+        return int(rows[-1][0]) if rows else 0
+
+    def cycleEnded(self):
+        """After outputs.cycleEnd at each cycle's end: the row just closed, once, to cyclic.Cyclic.cycleDone."""
+        rows = self.outputs.cycleRows
+        if not rows or rows[-1][0] <= self.lastClosed:
             return
+        self.lastClosed = rows[-1][0]
         before = rows[-2][4:6] if len(rows) > 1 else (0, 0)
-        self.cycleClosed(rows[-1][0], rows[-1][2], rows[-1][4] != before[0] or rows[-1][5] != before[1])
+        self.cycleDone(rows[-1][0], rows[-1][2], rows[-1][4] != before[0] or rows[-1][5] != before[1])
 
     def stopCondition(self):
         """The load phase's end test (checked every 200 steps): the displacement load has reached Fmax, or
@@ -220,14 +231,11 @@ class Oedometer(Experiment):
         self.startJumping()
         self.probe = Probe(p, self.loading, self.rig, self.dir, self.initial, self.jumper)
         self.outputs.start(self.probe)
-        if self.jumper is not None:
-            self.readCycles()
+        self.readCycles()
         # containment at simulated times (the recorder's period): the same in every identical run
         O.engines = O.engines + [runtime.callback(self, 'checkContainment', virtPeriod=self.T / p['samples'],
                                                   label=CONTAINMENT)]
-        if p['saveEvery'] > 0:  # first in the chain: a state saved before the step begins resumes exactly
-            O.engines = [runtime.callback(self, 'checkpoint', virtPeriod=p['saveEvery'], virtLast=O.time,
-                                          label=SAVER)] + list(O.engines)
+        self.startSaver(self.loading.t0, self.T)
         if p['timing']:
             O.timingEnabled = True
         self.say('load: plate at %.4f m on %d grains (%.1f kg, porosity %.3f), F = Fmax/2 [sin(2 pi f t - pi/2) + 1],'
@@ -245,10 +253,6 @@ class Oedometer(Experiment):
         K = sum(i.phys.kn for i in plate.intrs() if i.isReal)
         own = math.sqrt(plate.state.mass / (PLATE_STIFFNESS_MARGIN * K)) if plate.dynamic and K > 0 else None
         timestep.startDensityScaling(self, p['densityStep'], p.scaledPWaveStep(), {self.loading.plate: own})
-
-    def checkpoint(self):
-        """The saver's call (saveEvery): a state at the start of this step."""
-        self.save(os.path.join(self.out, 'state-iter%09d.yade.gz' % O.iter))
 
     # ------------------------------------------------------------------ engines and grains
     engine, degradingEngines, counter = staticmethod(engine), staticmethod(degradingEngines), staticmethod(counter)
@@ -357,10 +361,8 @@ class Oedometer(Experiment):
             'params': dict(p),
         }
         if self.jumper is not None:   # cycle jumping: what was simulated, jumped and extrapolated
-            rows = self.outputs.cycleRows
-            sj = float(self.outputs.settlementJumped()[-1]) if rows else 0.0
-            s.update({'cyclesSimulated': len(rows), 'cyclesJumped': self.jumper.jumped, 'jumps': len(self.jumper.jumps),
-                      'settlementJumped': sj, 'settlementTotal': (rows[-1][2] if rows else 0.0) + sj})
+            jumps = cyclic.jumpSummary(self.outputs.cycleTable(), self.jumper)
+            s.update({k: v for k, v in jumps.items() if k != 'cycles'})   # cycles: from the loading time, above
         return s
 
     def _writeTiming(self):
@@ -378,7 +380,7 @@ class Oedometer(Experiment):
         return dict(self.baseState(), packing=runtime.ref(self.packing), loading=runtime.ref(self.loading),
                     outputs=runtime.ref(self.outputs), rig=runtime.ref(self.rig), initial=self.initial,
                     maxProtrusion=self.maxProtrusion, nEscaped=self.nEscaped, stoppedBy=self.stoppedBy,
-                    jumper=runtime.ref(self.jumper))
+                    jumper=runtime.ref(self.jumper), lastClosed=self.lastClosed)
 
     @classmethod
     def fromState(cls, s, ref):
@@ -388,6 +390,8 @@ class Oedometer(Experiment):
         exp.initial, exp.maxProtrusion, exp.nEscaped = s['initial'], s['maxProtrusion'], s['nEscaped']
         exp.stoppedBy = s.get('stoppedBy')  # states saved before the stop conditions: unknown
         exp.jumper = ref(s['jumper']) if s.get('jumper') is not None else None   # none before cycle jumping
+        rows = exp.outputs.cycleRows   # states saved before the closed cycle was kept: the last row's
+        exp.lastClosed = s.get('lastClosed', rows[-1][0] if rows else 0)
         exp.probe = None
         return exp
 
@@ -423,7 +427,9 @@ def lastState(runDir):
     """The last state a run saved: run.json's lastState, else state-end, else the saveEvery state of the
     highest iteration, else state-start."""
     named = [(runStatus(runDir) or {}).get('lastState') or '']
+    # the checkpoints, by cycles done (state-iter*: the older name, by iteration)
     iters = sorted(os.path.basename(f) for f in glob.glob(os.path.join(runDir, 'state-iter*.yade.gz')))
+    iters += sorted(os.path.basename(f) for f in glob.glob(os.path.join(runDir, 'state-cycle*.yade.gz')))
     for name in named + ['state-end.yade.gz'] + iters[::-1] + ['state-start.yade.gz']:
         if name and os.path.isfile(os.path.join(runDir, name)):
             return os.path.join(runDir, name)

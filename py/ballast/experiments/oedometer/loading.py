@@ -20,7 +20,7 @@ from yade.wrapper import InterpolatingDirectedForceEngine
 
 from ... import runtime
 from .. import chain, grains
-from . import scene
+from .. import scene
 from .loadcurve import eq8, loadCurve
 
 # samples of eq. 8 per cycle for the plate's force: linear interpolation errs by at most
@@ -45,10 +45,7 @@ class PlateBase:
 
     @classmethod
     def fromState(cls, s, ref=None):
-        obj = cls()
-        for k, v in s.items():
-            setattr(obj, k, v)
-        return obj
+        return runtime.fromAttributes(cls, s)
 
     def bind(self, p):
         """The parameters (at start and after a restore)."""

@@ -4,20 +4,18 @@ starts from the same grains. The grains (YADE's SpherePack.makeCloud) fall frict
 cylinder, a plate presses them until they rest, friction is restored, the plate's force lowered and
 the grains stiffened to the true modulus; the plate is then lifted. docs/oedometer.md, "The sample",
 gives the porosities this reaches and why."""
-import json
 import math
 import os
-import time
 
-import numpy as np
-from yade import O, Vector3, pack, utils
+from yade import O, Vector3, utils
 
 from ... import runtime
-from ...geometry import meanCubedDiameterVolume, sphereVolume
 from ...params import requireWritableDir
-from .. import grains, preparation
-from . import scene
+from .. import grains, preparation, sample
+from ..containers import Cylinder
+from ..scene import engines, materials, rolling
 from .parameters import OWNER, packingKey
+from .rig import Rig
 
 
 @runtime.persistent('StoredPacking')
@@ -25,12 +23,9 @@ class StoredPacking:
     """Builds the packing of a seed, or loads it from the store; either way the loading starts from
     the stored file, so the same seed gives the same run. Replace it by any object with
     ``prepare(experiment)`` that leaves the grains, the cylinder and the engines in the scene and returns
-    the :class:`scene.Rig` (a registered object: ``@ballast.runtime.persistent(name)``)."""
+    the :class:`Rig` (a registered object: ``@ballast.runtime.persistent(name)``)."""
 
-    CLOUD_SOLID = 0.3       # [-] solid fraction of the falling cloud, low enough for grains to fall freely
-    PRESS_STILL = (0.03, 1e-5)   # ([s], [m]): the press ends when the plate moved less than this over that time
-    SEAT_STILL = (0.01, 2e-6)    # the same once friction is restored and the force lowered
-    PRESS_TIME = (0.05, 1.0)     # [s] shortest and longest press
+    SEAT_STILL = (0.01, 2e-6)    # ([s], [m]): seated when the plate moved less than this over that time
 
     def __init__(self):
         self.file, self.reused, self.escaped = None, False, None
@@ -57,87 +52,36 @@ class StoredPacking:
 
     def prepare(self, exp):
         p = exp.p
-        pdir = self.folder(p)
         keyDict, fname = packingKey(p)
-        path = os.path.join(pdir, fname)
-        if p['reusePacking'] and os.path.exists(path):
-            self.reused = True
-            exp.phases.say('packing: reusing %s' % path)
-        else:
-            self.build(exp)
-            os.makedirs(pdir, exist_ok=True)
-            x, r = grains.arrays()[:2]
-            data = {'key': keyDict, 'created': time.strftime('%Y-%m-%dT%H:%M:%S'), 'runId': exp.runId,
-                    'steps': dict(exp.phases.steps), 'wallSeconds': dict(exp.phases.wall),
-                    'grains': [[repr(float(v)) for v in (xi[0], xi[1], xi[2], ri)] for xi, ri in zip(x, r)]}
-            tmp = path + '.%d.tmp' % os.getpid()
-            with open(tmp, 'w') as fh:
-                json.dump(data, fh)
-            os.replace(tmp, path)  # atomic: concurrent runs of the same seed never see half a file
-            exp.phases.say('packing: %d grains saved to %s' % (len(r), path))
-        self.file = path
-        with open(path) as fh:
-            stored = json.load(fh)['grains']
+        self.file, doc, self.reused = sample.stored(exp, self.folder(p), keyDict, fname, p['reusePacking'],
+                                                    lambda: self.build(exp), 'packing')
         exp.newScene()
-        ballast, steel = scene.materials(p, p['young'])
-        rig = scene.Rig(scene.Cylinder(p, steel), ballast, steel)
-        O.engines = scene.engines(p['damping'], p['law'], scene.rolling(p))
-        for g in stored:
-            x, y, z, r = (float(v) for v in g)
-            O.bodies.append(utils.sphere((x, y, z), r, material=ballast, mask=scene.GRAIN_MASK))
-        O.dt = p['dtSafety'] * utils.PWaveTimeStep()
-        # contacts re-form with the stored overlaps; only the shear history is lost: let it settle
-        exp.phases.run('settle', lambda: grains.unbalanced() < 0.01, tEnd=O.time + 0.01, checkEvery=100)
+        ballast, steel = materials(p, p['young'])
+        rig = Rig(Cylinder(p, steel), ballast, steel)
+        sample.reload(exp, doc, ballast, p['damping'])
         return rig
 
     # ------------------------------------------------------------------ building
-    def cloud(self, p, seed, vSolid, Rin):
-        """Grains of total volume vSolid [m^3] in a loose cloud (solid fraction CLOUD_SOLID) above the bottom,
-        placed by YADE's SpherePack.makeCloud (radii uniform in [dMin/2, dMax/2], no overlaps) in the box
-        around the cylinder; those with their centre farther than Rin - dMax/2 - gap from the axis are
-        dropped, then the lowest kept until vSolid is reached. Returns (centres, radii, cloud top)."""
-        rMin, rMax = p['dMin'] / 2, p['dMax'] / 2
-        gap = 0.05 * p['dMin']
-        Rc = Rin - rMax - gap
-        z0 = rMax + gap
-        hBox = 1.25 * vSolid / (self.CLOUD_SOLID * math.pi * Rc ** 2)  # the square box loses 1 - pi/4 of its grains
-        num = int(math.ceil(1.25 * vSolid / meanCubedDiameterVolume(p['dMin'], p['dMax']) * 4 / math.pi))
-        for attempt in range(6):  # a narrow box holds big grains at a lower solid fraction: make it taller
-            sp = pack.SpherePack()
-            made = sp.makeCloud((-Rc, -Rc, z0), (Rc, Rc, z0 + hBox), rMean=(rMin + rMax) / 2,
-                                rRelFuzz=(rMax - rMin) / (rMax + rMin), num=num, seed=seed)
-            if made == num:
-                break
-            hBox *= 1.3
-        else:
-            raise RuntimeError('cloud: makeCloud placed %d of %d grains' % (made, num))
-        kept = sorted(((c[2], c[0], c[1], r) for c, r in sp if math.hypot(c[0], c[1]) < Rc))
-        z, x, y, r = (np.array(v) for v in zip(*kept))
-        n = int(np.searchsorted(np.cumsum(sphereVolume(r)), vSolid)) + 1
-        if n > len(r):
-            raise RuntimeError('cloud: %.3g m^3 of grains asked, %.3g placed' % (vSolid, np.sum(sphereVolume(r))))
-        return np.column_stack([x[:n], y[:n], z[:n]]), r[:n], float(np.max(z[:n] + r[:n]))
-
     def build(self, exp):
         p = exp.p
         exp.newScene()
-        ballast, steel = scene.materials(p, p['prepYoung'])
+        ballast, steel = materials(p, p['prepYoung'])
         ballast.frictionAngle = p['depFriction']
-        self.rig = scene.Rig(None, ballast, steel)
+        self.rig = Rig(None, ballast, steel)
         Rin = p['diameter'] / 2
-        pos, rad, top = self.cloud(p, p['seed'], p['fill'] * math.pi * Rin ** 2 * p['height'], Rin)
+        pos, rad, top = sample.cloud(sample.CylinderShape(Rin), p['dMin'], p['dMax'], p['fill'] * math.pi * Rin ** 2 * p['height'],
+                                     p['seed'])
         # while the cloud falls the wall reaches above it, or grains bounce out over the rim
-        self.rig.cylinder = scene.Cylinder(p, steel, max(p['height'], top + p['dMax']))
-        O.engines = scene.engines(p['prepDamping'], p['law'], scene.rolling(p)) + [
+        self.rig.cylinder = Cylinder(p, steel, max(p['height'], top + p['dMax']))
+        O.engines = engines(p['prepDamping'], p['law'], rolling(p)) + [
             runtime.callback(self, 'shake', iterPeriod=10, dead=True, label='oedoShaker')]
-        for c, r in zip(pos, rad):
-            O.bodies.append(utils.sphere(tuple(c), float(r), material=self.rig.ballast, mask=scene.GRAIN_MASK))
+        sample.place(pos, rad, self.rig.ballast)
         O.dt = preparation.PREP_DT_SAFETY * utils.PWaveTimeStep()
         exp.phases.say('deposit: %d grains (%.1f %% of the cylinder) falling from up to %.3f m, friction %g rad '
                        '(E = %.3g Pa while preparing, dt = %.2e s)' % (len(rad), 100 * p['fill'], top,
                                                                       p['depFriction'], p['prepYoung'], O.dt))
         tDep = p['depTime'] or math.sqrt(2 * top / 9.81)
-        exp.phases.run('deposit', tEnd=O.time + tDep, simSpan=tDep, simStart=O.time, extra=grains.restInfo)
+        sample.deposit(exp, tDep)
         out = [b.id for b in grains.spheres() if math.hypot(b.state.pos[0], b.state.pos[1]) > self.rig.cylinder.Rv
                or b.state.pos[2] < 0]
         for i in out:
@@ -158,19 +102,8 @@ class StoredPacking:
         if p['pressForce'] <= 0:
             self.restoreFriction(exp)
             return
-        x, r, _ = grains.arrays()
-        b = utils.wall(float(np.max(x[:, 2] + r)), axis=2, sense=-1, material=self.rig.steel, mask=scene.STEEL_MASK)
-        b.state.blockedDOFs = 'xyXYZ'
-        b.state.mass = p['steelDensity'] * math.pi * (p['diameter'] / 2) ** 2 * p['plateThickness']
-        b.state.inertia = Vector3(1, 1, 1)  # a wall has none; its rotations are blocked, but Newton divides by it
-        b.dynamic = True
-        self._plate = O.bodies.append(b)
-        O.forces.setPermF(self._plate, Vector3(0, 0, -p['pressForce']))
-        tShort, tLong = self.PRESS_TIME
-        t0 = O.time
-        exp.phases.run('press', preparation.still(self._plate, *self.PRESS_STILL, after=t0 + tShort, unbalanced=0.01),
-                       tEnd=t0 + tLong,
-                       extra=lambda: 'plate at %.4f m  %s' % (O.bodies[self._plate].state.pos[2], grains.restInfo()))
+        self._plate = sample.press(exp, self.rig.steel, p['steelDensity'] * math.pi * (p['diameter'] / 2) ** 2 *
+                                   p['plateThickness'], p['pressForce'])
         self.restoreFriction(exp)
         O.forces.setPermF(self._plate, Vector3(0, 0, -p['seatForce']))
         t0 = O.time

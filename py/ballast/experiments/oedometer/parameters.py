@@ -15,6 +15,7 @@ from ...geometry import frictPhysStiffness
 from ...params import (ABRASION, CRUSH, CYCLE_JUMP, DENSITY_STEP, INT32_MAX, NUMBER_NONNEGATIVE, NUMBER_POSITIVE, Param, ParamError,
                        Parameters, TIME_STEP, anyText, between, boolean, checkDensityStep, choice, flag, intAtLeast, intBetween,
                        literal, nonNegative, positive, positiveInt, text, checkCycleJump)
+from ..cycleparams import PARAMS as CYCLE_OUTPUTS
 from .loadcurve import halfLoadTime, peakTime
 
 OWNER = 'Oedometer'
@@ -137,14 +138,11 @@ PARAMS = {
     'runId': Param('', '-', "run id (default O.tags['d.id']); an existing directory gets a suffix, never overwritten",
                    anyText, 'a name', text),
     'samples': Param(5000, '-', 'rows of fd.csv per loading cycle', intAtLeast(10), 'an integer >= 10'),
-    'vtk': Param(0.0, 's', 'VTK output period while loading, simulated time (0 = no VTK output)', nonNegative,
-                 NUMBER_NONNEGATIVE),
-    'saveEvery': Param(0.0, 's', 'besides the states at the start and the end of loading, save the state every '
-                       'saveEvery of simulated loading time (0 = only those two)', nonNegative, NUMBER_NONNEGATIVE),
     'progress': Param(10.0, 's', 'wall-clock seconds between progress lines', positive, NUMBER_POSITIVE),
     'timing': Param(False, '-', 'time every engine while loading (O.timingEnabled) and write timing.txt', boolean,
                     '0 or 1', flag),
     **CYCLE_JUMP,
+    **CYCLE_OUTPUTS,
 }
 
 # What decides a packing: these parameters and the version of the preparation. Bump the version
@@ -270,18 +268,14 @@ class OedometerParameters(Parameters):
             bad('Fmin', 'must be smaller than Fmax = %g' % p['Fmax'])
         if p['prepYoung'] > p['young']:
             bad('prepYoung', 'must not exceed young = %g' % p['young'])
-        # periods: a crushing check in every load cycle; a frame or a state within the loading
-        T, loading = 1 / p['f'], p['cycles'] / p['f']
+        # periods: a crushing check in every load cycle
+        T = 1 / p['f']
         if p['Tc'] > T:
             bad('Tc', 'longer than the load cycle 1/f = %g s: a cycle could pass without a crushing check (Tc <= 1/f; '
                       '0 = every step)' % T)
         if p['abrasionPeriod'] * dt > T:
             bad('abrasionPeriod', '%d steps of %.3g s are longer than the load cycle 1/f = %g s (at most %d steps)' % (
                 p['abrasionPeriod'], dt, T, int(T / dt)))
-        for name in ('vtk', 'saveEvery'):
-            if p[name] > loading:
-                bad(name, 'longer than the loading, cycles/f = %g s: it would never fire (at most %g s; 0 = off)'
-                    % (loading, loading))
 
 
 def check(values, text=False):

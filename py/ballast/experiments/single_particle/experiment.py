@@ -25,11 +25,10 @@ from ... import runtime
 from ...engines import BallastCrushEngine
 from .. import timestep
 from ..base import Experiment
-from ..oedometer.scene import LAWS, materials
+from ..scene import AVOID, GRAIN_MASK, LAWS, STEEL_MASK, materials  # platens pair with grains only (AVOID)
 from . import outputs
 from .parameters import SingleParticleParameters
 
-GRAIN_MASK, STEEL_MASK, AVOID = 0b101, 0b110, 0b010  # platens pair with grains only (collider's avoid mask)
 PITCH = 1.5            # [-] grains' centres this many dMax apart
 PLATEN_HALF = 0.6      # [-] half-width of a square platen over the grain's diameter
 PLATEN_THICKNESS = 0.01  # [m]

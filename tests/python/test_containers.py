@@ -1,4 +1,4 @@
-"""ballast.oedometer.scene: the cylinder's flat faces at the inner diameter, the steel materials."""
+"""ballast.experiments.containers and .scene: the cylinder's flat faces at the inner diameter, the steel materials."""
 import math
 
 import numpy as np
@@ -8,14 +8,16 @@ pytest.importorskip('yade')
 from yade import O  # noqa: E402
 from yade.wrapper import Wall  # noqa: E402
 
-from ballast.oedometer import check, scene  # noqa: E402
+from ballast.experiments import scene  # noqa: E402
+from ballast.experiments.containers import Cylinder  # noqa: E402
+from ballast.oedometer import check  # noqa: E402
 
 
 def test_cylinder_faces_at_the_inner_radius_and_closed_bottom():
     O.reset()
     p = check({'segments': 24})
     _, steel = scene.materials(p, p['young'])
-    cyl = scene.Cylinder(p, steel)
+    cyl = Cylinder(p, steel)
     assert cyl.Rin == p['diameter'] / 2 and cyl.Rv == pytest.approx(cyl.Rin / math.cos(math.pi / 24), rel=1e-14)
     side = []
     for i in cyl.ids:

@@ -1,0 +1,104 @@
+"""What the box test records while it cycles: the sleeper and the engines sampled `samples` times a cycle, and a
+row of cycles.csv closed at each cycle's end (docs/box.md, "Output")."""
+import math
+import time
+
+import numpy as np
+from yade import O
+
+from ... import runtime
+from ...engines import BallastAbrasionEngine, BallastCrushEngine
+from .. import chain, grains
+
+LOAD = 'boxLoad'   # the label of the load on the sleeper (InterpolatingDirectedForceEngine)
+
+
+@runtime.persistent('BoxRecorder')
+class Recorder:
+    """Samples the sleeper and the engines `samples` times a cycle (a callback at simulated times) and closes
+    a row of cycles.csv at each cycle's end: the permanent settlement (at the seating load), the resilient
+    deflection, the work of the load over the cycle, crushes and abrasions, the largest fatigue damage."""
+
+    COLUMNS = ('t', 'cycle', 'F', 'Fgrains', 'settlement', 'tilt', 'nCrushed', 'nAbraded', 'maxStressRatio')
+    CYCLE_COLUMNS = ('cycle', 't', 'settlement', 'settlementPeak', 'resilient', 'work', 'crushes', 'abrasions',
+                     'nCrushed', 'nAbraded', 'maxDamage', 'maxStressRatio', 'nGrains', 'tilt', 'cpuSeconds')
+
+    def __init__(self, sleeper=None, z0=None, t0=None, period=None):
+        self.sleeper, self.z0, self.t0, self.period = sleeper, z0, t0, period
+        # the rows of the current cycle (samples.csv holds them all: BoxTest.sample appends each), of cycles.csv;
+        # a saved state keeps only the current cycle's, so it stays small over thousands of cycles
+        self.samples, self.cycles = [], []
+        self.start = None                    # index in samples of the current cycle's first row
+        self.cpu = None                      # process CPU [s] at the current cycle's start (not saved: per process)
+        self.jumped = 0                      # cycles advanced by cycle jumping, not simulated (docs/cycles.md)
+
+    def state(self):
+        return {k: getattr(self, k) for k in ('sleeper', 'z0', 't0', 'period', 'samples', 'cycles', 'start', 'jumped')}
+
+    def restored(self):
+        """After a restore: the open cycle's CPU counted from here (a process's clock does not carry over; it was
+        left out, NaN, in the first cycle of every slice and reopened run)."""
+        if self.start is not None:
+            self.cpu = time.process_time()
+
+    @classmethod
+    def fromState(cls, s, ref=None):
+        return runtime.fromAttributes(cls, s)
+
+    def underside(self):
+        """Height of the sleeper's underside [m] at its centre."""
+        b = O.bodies[self.sleeper]
+        return b.state.pos[2] - b.shape.extents[2]
+
+    def tilt(self):
+        """The sleeper's rotation about y [rad]."""
+        q = O.bodies[self.sleeper].state.ori
+        axis, angle = q.toAxisAngle()
+        return float(angle * axis[1])
+
+    def applied(self):
+        return -chain.engine(LOAD).force[2]
+
+    def grainsForce(self):
+        """Upward force of the grains on the sleeper [N]: its force container holds the contacts and the applied load."""
+        return O.forces.f(self.sleeper)[2] + self.applied()
+
+    def cycle(self):
+        """Whole cycles since cycling began (a sample at a cycle's end belongs to the cycle it ends)."""
+        return int(math.floor((O.time - self.t0) / self.period + 1e-6)) + self.jumped
+
+    def jump(self, cycles):
+        """`cycles` more cycles counted as done without being simulated: the current cycle's rows move with them."""
+        self.jumped += cycles
+        for row in self.samples[self.start:]:
+            row[1] += cycles
+
+    def sample(self):
+        """A row of samples.csv; returns the cycle it closed, or 0."""
+        counts = [sum(getattr(e, k) for e in O.engines if isinstance(e, kind)) for kind, k in
+                  ((BallastCrushEngine, 'nCrushed'), (BallastAbrasionEngine, 'nAbraded'))]
+        crush = [e for e in O.engines if isinstance(e, BallastCrushEngine)]
+        ratio = max([e.maxCrushableRatio for e in crush], default=math.nan)   # at the engine's last check
+        row = [O.time - self.t0, self.cycle(), self.applied(), self.grainsForce(), self.z0 - self.underside(),
+               self.tilt()] + counts + [ratio]
+        self.samples.append(row)
+        if self.start is None:
+            self.start, self.cpu = len(self.samples) - 1, time.process_time()
+        elif row[1] > self.samples[self.start][1]:   # a cycle ended at this sample: it opens the next one
+            self.closeCycle(len(self.samples) - 1)
+            self.samples, self.start = self.samples[-1:], 0
+            return int(row[1])
+        return 0
+
+    def closeCycle(self, end):
+        rows = np.array(self.samples[self.start:end + 1], dtype=float)
+        F, s = rows[:, 2], rows[:, 4]
+        crush = [e for e in O.engines if isinstance(e, BallastCrushEngine)]
+        n = int(rows[-1, 1])
+        self.cycles.append([n, rows[-1, 0], s[-1], float(np.max(s)), float(np.max(s) - s[-1]),
+                            float(np.sum(0.5 * (F[1:] + F[:-1]) * np.diff(s))),
+                            int(rows[-1, 6] - rows[0, 6]), int(rows[-1, 7] - rows[0, 7]), int(rows[-1, 6]),
+                            int(rows[-1, 7]), max([e.maxDamage for e in crush], default=0.0),
+                            float(np.max(rows[:, 8])) if crush else math.nan, len(grains.spheres()),
+                            rows[-1, 5], time.process_time() - self.cpu if self.cpu is not None else math.nan])
+        self.cpu = time.process_time()

@@ -1,0 +1,209 @@
+"""The one cyclic piece every cyclic experiment shares (the oedometer's cycles of eq. 8, the box test, a
+later triaxial cell): the cycles.csv schema, the same column names meaning the same quantities in every
+experiment, the jump summary, and the checkpoints every saveEvery cycles. Cycles are numbered with the
+jumped ones (cycle jumping, :mod:`.cyclejump`). The base drives it (:class:`ballast.experiments.base.Experiment`:
+``closeCycle``, ``cycleCheckpoint``); an experiment gives each closed cycle's row.
+
+cycles.csv, one row per simulated cycle (pandas reads it), the shared columns first:
+
+============== ====== ===================================================================================
+cycle          -      the cycle's number, the jumped cycles counted
+t              s      loading time at the cycle's end (since cycling began, jumped cycles not simulated)
+settlement     m      permanent deformation: the loading body's displacement at the cycle's end (the lower
+                      load), from the start of cycling
+resilient      m      resilient deformation: the largest displacement within the cycle less that at its end
+crushes        -      grains crushed in the cycle
+abrasions      -      abrasions in the cycle
+nCrushed       -      grains crushed since cycling began
+nAbraded       -      abrasions since cycling began
+maxDamage      -      the largest fatigue damage D of a grain at the cycle's end (0 without fatigue)
+maxStressRatio -      the largest sigma/f_t of a grain that can crush, over the crushing checks of the cycle
+nGrains        -      grains (and fragments) at the cycle's end
+cpuSeconds     s      CPU time of the cycle (NaN for the first cycle of a process that went on from a state)
+jumped         -      with cycle jumping: the cycles jumped before this row
+settlementJumped m    with cycle jumping: the settlement extrapolated over those cycles (settlement laws)
+============== ====== ===================================================================================
+
+then each experiment's own (the oedometer: Bg; the box: settlementPeak, work, tilt)."""
+import os
+import re
+
+import numpy as np
+import pandas as pd
+from yade import O
+
+from .. import runtime
+from ..runfiles import writeAtomic
+from ..settlementlaws import settlementJumped
+from . import chain, grains
+from .cyclejump import CycleJumper
+
+COLUMNS = ('cycle', 't', 'settlement', 'resilient', 'crushes', 'abrasions', 'nCrushed', 'nAbraded', 'maxDamage',
+           'maxStressRatio', 'nGrains', 'cpuSeconds')
+JUMP_COLUMNS = ('jumped', 'settlementJumped')
+CHECKPOINT = 'state-cycle%07d.yade.gz'   # the state saved after a cycle (saveEvery), named by the cycles done
+WITHIN_CYCLE = 'state-iter%09d.yade.gz'  # a state saved within cycles (saveEvery a fraction), named by the step
+SAVER = 'cycleSaver'                     # the label of the checkpoint callback, first in the chain
+JUMP_STATE = 'state-jump%04d-%s.yade.gz'   # the states around jump k: 'before' and 'after' it
+JUMP_STATE_NAME = re.compile(r'state-jump(\d+)-(?:before|after)\.yade\.gz')   # the same names, read back
+JUMPER = 'cycleJumper'   # the label of the callback that makes a planned jump
+
+
+def changed(frame):
+    """Whether a grain crushed or abraded in each cycle: the bed the settlement laws fit changed there."""
+    return (frame.crushes + frame.abrasions > 0).to_numpy()
+
+
+def table(rows, own=(), jumper=None):
+    """cycles.csv as a DataFrame: rows (dicts with COLUMNS and the experiment's `own` columns) in the shared order,
+    with cycle jumping (a jumper) the cycles jumped before each row and the settlement extrapolated over them."""
+    frame = pd.DataFrame(list(rows), columns=list(COLUMNS) + list(own))
+    if jumper is not None:
+        frame.insert(len(COLUMNS), 'jumped', frame.cycle.astype(int) - np.arange(1, len(frame) + 1))
+        frame.insert(len(COLUMNS) + 1, 'settlementJumped', settlementJumped(frame.cycle, frame.settlement, changed(frame)))
+    return frame
+
+
+def write(path, frame):
+    """cycles.csv, atomically (a killed run keeps the cycles it closed)."""
+    writeAtomic(path, frame.to_csv(index=False, float_format='%.9g'))
+
+
+def jumpSummary(frame, jumper):
+    """summary.json's word on cycle jumping: the cycles reached, simulated and jumped, the jumps, the extrapolated
+    settlement ({} without jumping)."""
+    if jumper is None:
+        return {}
+    n = len(frame)
+    s, sj = (float(frame.settlement.iloc[-1]), float(frame.settlementJumped.iloc[-1])) if n else (0.0, 0.0)
+    return {'cycles': int(frame.cycle.iloc[-1]) if n else 0, 'cyclesSimulated': n, 'cyclesJumped': int(jumper.jumped),
+            'jumps': len(jumper.jumps), 'settlementJumped': sj, 'settlementTotal': s + sj}
+
+
+def wholeCycles(every):
+    """Whether saveEvery [cycles] is a whole number of cycles (checkpoints after cycles close)."""
+    return float(every).is_integer()
+
+
+class Cyclic:
+    """What the base gives a cyclic experiment (a mixin of :class:`ballast.experiments.base.Experiment`): the
+    checkpoints every saveEvery cycles and cycle jumping. The experiment calls :meth:`startCycles` when its cycles
+    start, :meth:`cycleDone` at each simulated cycle's end, numbers its cycles with the jumped ones and, if it
+    counts cycles itself, moves its count on in :meth:`jumped`."""
+
+    SAVER = SAVER   # the checkpoint callback's label (an experiment's older states may name it otherwise)
+    jumper = None   # the CycleJumper piece of a run with cycle jumping (startJumping)
+
+    def startCycles(self, t0, period):
+        """At the start of cycling (loading time t0 [s], cycles of `period` [s]): the checkpoints, then cycle
+        jumping (with jump)."""
+        self.startSaver(t0, period)
+        self.startJumping()
+
+    def startSaver(self, t0, period):
+        """With saveEvery: the checkpoint callback, first in the chain so that a state saved before the step begins
+        resumes exactly. Every whole number of cycles it wakes after a cycle closed (cycleDone); a fraction of a
+        cycle (the long cycle of the oedometer: 0.25 saves four states a cycle) is every saveEvery periods of
+        loading time from t0."""
+        every = self.p['saveEvery']
+        if every > 0 and wholeCycles(every):
+            self.addSaver()
+        elif every > 0:
+            O.engines = [runtime.callback(self, 'checkpoint', virtPeriod=every * period, virtLast=t0,
+                                          label=self.SAVER)] + list(O.engines)
+
+    def addSaver(self):
+        O.engines = [runtime.callback(self, 'checkpoint', iterPeriod=1, dead=True, label=self.SAVER)] + list(O.engines)
+
+    def cycleDone(self, cycle, settlement, changed):
+        """The experiment's call at the end of each simulated cycle `cycle` (numbered with the jumped ones), with its
+        permanent settlement [m] and whether a grain crushed or abraded in it: the checkpoint after every saveEvery
+        cycles and, with jumping, the jumper's reading of the cycle; both act at the start of the next step."""
+        every = self.p['saveEvery']
+        if every and wholeCycles(every) and cycle % every == 0:
+            if chain.engine(self.SAVER) is None:   # reopened with saveEvery from a run that had none
+                self.addSaver()
+            chain.engine(self.SAVER).dead = False
+        if self.jumper is not None:
+            self.cycleClosed(cycle, settlement, changed)
+
+    def checkpoint(self):
+        """The saver's call at the start of a step: a state to go on from, exactly where the run was; after a cycle
+        closed state-cycle<N>.yade.gz (N the cycles done), within cycles state-iter<step>.yade.gz."""
+        if wholeCycles(self.p['saveEvery']):
+            chain.engine(self.SAVER).dead = True
+            self.save(os.path.join(self.out, CHECKPOINT % self.cyclesDone()))
+        else:
+            self.save(os.path.join(self.out, WITHIN_CYCLE % O.iter))
+
+    def cyclesDone(self):
+        """Cycles done, simulated and jumped (each experiment counts them)."""
+        raise NotImplementedError
+
+    # ------------------------------------------------------------------ cycle jumping (experiments.cyclejump)
+    def startJumping(self):
+        """With jump: the jumper (self.jumper, a piece) and, first in the chain, the callback that makes a jump at
+        the start of the step after the cycle that planned it (where a saved state resumes exactly)."""
+        self.jumper = CycleJumper.of(self.p)
+        if self.jumper is not None:
+            O.engines = [runtime.callback(self, 'jumpNow', iterPeriod=1, dead=True, label=JUMPER)] + list(O.engines)
+            self.adopt()
+
+    def syncJumping(self):
+        """At the start of a load(): jumping as the parameters now say (a run reopened may start, tune or stop it;
+        the cycles jumped stay counted). Returns True if jumping starts now."""
+        if self.jumper is None:
+            if self.p['jump']:
+                self.startJumping()
+                return True
+            return False
+        self.jumper.tune(self.p)
+        return False
+
+    def cycleClosed(self, cycle, settlement, changed):
+        """The experiment's call at the end of each simulated cycle (numbered with the jumped ones), with its
+        permanent settlement [m] and whether a grain crushed or abraded in it: the jumper reads the grains' damage
+        and plans a jump, made at the next step."""
+        ids = [b.id for b in grains.spheres()]
+        if self.jumper.cycleEnded(chain.engine('crush'), ids, cycle, settlement, changed):
+            chain.engine(JUMPER).dead = False
+
+    def jumpNow(self):
+        """The state before, the jump, the state after (state-jump<K>-before/after.yade.gz), jumps.csv."""
+        chain.engine(JUMPER).dead = True
+        k = len(self.jumper.jumps) + 1
+        before, after = JUMP_STATE % (k, 'before'), JUMP_STATE % (k, 'after')
+        self.save(os.path.join(self.out, before))
+        e = self.jumper.apply(chain.engine('crush'), before, after)
+        self.jumped(e['cycles'])
+        self.save(os.path.join(self.out, after))
+        if self.p['jumpStates'] == 'last' and k > 1:
+            self.forgetJumpStates(self.jumper.jumps[-2])
+        self.jumper.writeLog(os.path.join(self.out, 'jumps.csv'))
+        self.say('jump %d: cycles %d -> %d (bound: %s), largest damage rate %.3g a cycle, settlement %+.4f mm '
+                 'extrapolated' % (k, e['cycle'], e['to'], e['limit'], e['maxRate'], 1e3 * e['settlementJumped']))
+
+    def cutJumps(self):
+        """A killed run resumed: jumps.csv back to the jumps of the state it goes on from, and the states the killed
+        process saved around later jumps removed (those jumps are taken again under the same numbers, or not)."""
+        if self.jumper is None:
+            return
+        self.jumper.writeLog(os.path.join(self.out, 'jumps.csv'))
+        for name in os.listdir(self.out):
+            m = JUMP_STATE_NAME.fullmatch(name)
+            if m and int(m.group(1)) > len(self.jumper.jumps):
+                os.remove(os.path.join(self.out, name))
+
+    def forgetJumpStates(self, jump):
+        """Remove the states this run saved around an earlier jump (jumpStates 'last') and their names from its log
+        row; those of the run it continues (another folder) stay."""
+        for key in ('stateBefore', 'stateAfter'):
+            path = os.path.join(self.out, jump[key])
+            if jump[key] and path in self.saved:
+                if os.path.exists(path):
+                    os.remove(path)
+                self.saved.remove(path)
+                jump[key] = ''
+
+    def jumped(self, cycles):
+        """After a jump of `cycles` (subclasses whose own records count cycles move them on)."""

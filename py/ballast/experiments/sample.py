@@ -1,0 +1,154 @@
+"""The one sample builder every experiment with a packed bed uses: a loose cloud of grains in the
+container's shape (YADE's SpherePack.makeCloud, diameters uniform in [dMin, dMax]), its deposition, a
+press through a steel plate until it rests, and the store: a prepared sample is saved under a name made
+from the parameters that decide it (the experiment's key) and every later run of the same key starts
+from the stored grains, so a seed gives the same run. What each experiment composes of these steps is
+its own (the oedometer: one fill, vibration, a press then a seating load; the box: layers, each
+pressed): ``experiments/oedometer/packing.py``, ``experiments/box/bed.py``.
+
+The container's shape enters the cloud only, through :class:`CylinderShape` and :class:`BoxShape`
+(where the cloud is made, how many grains to ask of makeCloud); the container's bodies are
+:mod:`.containers`. Grains are placed and stored as spheres [x, y, z, r] (the paper's grain)."""
+import json
+import math
+import os
+import time
+
+import numpy as np
+from yade import O, Vector3, pack, utils
+
+from ..geometry import meanCubedDiameterVolume, sphereVolume
+from ..runfiles import writeAtomic
+from . import grains, preparation
+from .scene import GRAIN_MASK, STEEL_MASK, engines, rolling
+
+CLOUD_SOLID = 0.3            # [-] solid fraction of a falling cloud: grains fall freely
+PRESS_STILL = (0.03, 1e-5)   # ([s], [m]): a press ends when its plate moved less than this over that time
+PRESS_TIME = (0.05, 1.0)     # [s] shortest and longest press
+CLOUD_ATTEMPTS = 6           # makeCloud in a box 1.3 times taller each time it cannot place every grain
+
+
+class CylinderShape:
+    """A cylinder of inner radius Rin [m] around the z axis: the cloud fills the square around it and keeps the
+    grains whose centre is within Rin - rMax - gap of the axis (the square loses 1 - pi/4 of them)."""
+
+    def __init__(self, Rin):
+        self.Rin = Rin
+
+    def region(self, vSolid, rMax, gap, zBottom, grainVolume):
+        """(lower corner, upper x and y, height [m], grains to ask of makeCloud) of the cloud holding vSolid [m^3]
+        of grains of mean volume grainVolume [m^3]."""
+        Rc = self.Rin - rMax - gap
+        h = 1.25 * vSolid / (CLOUD_SOLID * math.pi * Rc ** 2)
+        return (-Rc, -Rc, zBottom + rMax + gap), (Rc, Rc), h, int(math.ceil(1.25 * vSolid / grainVolume * 4 / math.pi))
+
+    def keeps(self, c, rMax, gap):
+        return math.hypot(c[0], c[1]) < self.Rin - rMax - gap
+
+
+class BoxShape:
+    """A box of inner length [m] (x) and width [m] (y) centred on the z axis: the cloud fills it, held rMax + gap
+    off its walls (makeCloud falls short of CLOUD_SOLID between close walls: a taller cloud)."""
+
+    def __init__(self, length, width):
+        self.length, self.width = length, width
+
+    def region(self, vSolid, rMax, gap, zBottom, grainVolume):
+        a, b = self.length / 2 - rMax - gap, self.width / 2 - rMax - gap
+        h = 1.5 * vSolid / (CLOUD_SOLID * 4 * a * b)
+        return (-a, -b, zBottom + rMax + gap), (a, b), h, int(math.ceil(1.2 * vSolid / grainVolume))
+
+    def keeps(self, c, rMax, gap):
+        return True
+
+
+def cloud(shape, dMin, dMax, vSolid, seed, zBottom=0.0):
+    """Grains of total volume vSolid [m^3] in a loose cloud (solid fraction CLOUD_SOLID) in `shape` above zBottom
+    [m], placed without overlap by makeCloud (radii uniform in [dMin/2, dMax/2]), the lowest kept until vSolid is
+    reached. Returns (centres (n, 3) [m], radii [m], the cloud's top [m])."""
+    rMin, rMax = dMin / 2, dMax / 2
+    gap = 0.05 * dMin
+    lo, hi, h, num = shape.region(vSolid, rMax, gap, zBottom, meanCubedDiameterVolume(dMin, dMax))
+    for attempt in range(CLOUD_ATTEMPTS):  # a narrow container holds big grains at a lower solid fraction
+        sp = pack.SpherePack()
+        made = sp.makeCloud(lo, (hi[0], hi[1], lo[2] + h), rMean=(rMin + rMax) / 2,
+                            rRelFuzz=(rMax - rMin) / (rMax + rMin), num=num, seed=seed)
+        if made == num:
+            break
+        h *= 1.3
+    else:
+        raise RuntimeError('cloud: makeCloud placed %d of %d grains' % (made, num))
+    kept = sorted((c[2], c[0], c[1], r) for c, r in sp if shape.keeps(c, rMax, gap))
+    z, x, y, r = (np.array(v) for v in zip(*kept))
+    n = int(np.searchsorted(np.cumsum(sphereVolume(r)), vSolid)) + 1
+    if n > len(r):
+        raise RuntimeError('cloud: %.3g m^3 of grains asked, %.3g placed' % (vSolid, np.sum(sphereVolume(r))))
+    return np.column_stack([x[:n], y[:n], z[:n]]), r[:n], float(np.max(z[:n] + r[:n]))
+
+
+def place(centres, radii, material):
+    """The grains appended to the scene, in the order given (their ids follow it)."""
+    for c, r in zip(centres, radii):
+        O.bodies.append(utils.sphere(tuple(float(v) for v in c), float(r), material=material, mask=GRAIN_MASK))
+
+
+def deposit(exp, tFall):
+    """The grains fall for tFall [s] of simulated time, with progress lines."""
+    exp.phases.run('deposit', tEnd=O.time + tFall, simSpan=tFall, simStart=O.time, extra=grains.restInfo)
+
+
+def press(exp, steel, mass, force):
+    """A steel plate (a wall, free along z only, of `mass` [kg]) laid on the grains' top and pressed down with
+    `force` [N] until it rests (PRESS_STILL, within PRESS_TIME). Returns its id: the caller keeps or erases it."""
+    x, r, _ = grains.arrays()
+    plate = utils.wall(float(np.max(x[:, 2] + r)), axis=2, sense=-1, material=steel, mask=STEEL_MASK)
+    plate.state.blockedDOFs = 'xyXYZ'
+    plate.state.mass = mass
+    plate.state.inertia = Vector3(1, 1, 1)  # a wall has none; its rotations are blocked, but Newton divides by it
+    plate.dynamic = True
+    pid = O.bodies.append(plate)
+    O.forces.setPermF(pid, Vector3(0, 0, -force))
+    tShort, tLong = PRESS_TIME
+    t0 = O.time
+    exp.phases.run('press', preparation.still(pid, *PRESS_STILL, after=t0 + tShort, unbalanced=0.01), tEnd=t0 + tLong,
+                   extra=lambda: 'plate at %.4f m  %s' % (O.bodies[pid].state.pos[2], grains.restInfo()))
+    return pid
+
+
+# ---------------------------------------------------------------------------- the store
+def store(path, key, exp, **extra):
+    """The grains of the scene saved to `path` (JSON, written atomically: concurrent runs of the same key never
+    see half a file) with the key that decides them, who made them and `extra` (what the experiment needs back)."""
+    x, r = grains.arrays()[:2]
+    os.makedirs(os.path.dirname(path) or '.', exist_ok=True)
+    doc = dict({'key': key, 'created': time.strftime('%Y-%m-%dT%H:%M:%S'), 'runId': exp.runId,
+                'steps': dict(exp.phases.steps), 'wallSeconds': dict(exp.phases.wall)}, **extra)
+    doc['grains'] = [[repr(float(v)) for v in (xi[0], xi[1], xi[2], ri)] for xi, ri in zip(x, r)]
+    writeAtomic(path, json.dumps(doc))
+    return len(r)
+
+
+def stored(exp, folder, key, name, reuse, build, what='sample'):
+    """The stored sample `name` in `folder`: built by build() and stored if it is not there or not reused (build
+    returns the extra fields to keep), then read. Returns (its path, its document, whether it was reused)."""
+    path = os.path.join(folder, name)
+    reused = bool(reuse and os.path.exists(path))
+    if reused:
+        exp.phases.say('%s: reusing %s' % (what, path))
+    else:
+        n = store(path, key, exp, **(build() or {}))
+        exp.phases.say('%s: %d grains saved to %s' % (what, n, path))
+    with open(path) as fh:
+        return path, json.load(fh), reused
+
+
+def reload(exp, doc, ballast, damping, settleTime=0.01):
+    """The stored grains placed in the scene (whose container and materials the caller has built), the engine
+    chain with the loading damping, the step of eq. 5, and a short settling: contacts re-form with the stored
+    overlaps, only their shear and rolling history is lost."""
+    p = exp.p
+    O.engines = engines(damping, p['law'], rolling(p))
+    g = np.array([[float(v) for v in row] for row in doc['grains']]).reshape(-1, 4)
+    place(g[:, :3], g[:, 3], ballast)
+    O.dt = p['dtSafety'] * utils.PWaveTimeStep()
+    exp.phases.run('settle', lambda: grains.unbalanced() < 0.01, tEnd=O.time + settleTime, checkEvery=100)
