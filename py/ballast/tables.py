@@ -8,7 +8,6 @@ the tables: a study reads them with :class:`Table`, a run of one row (YADE_BATCH
 import atexit
 import contextlib
 import io
-import itertools
 import math
 import os
 import re

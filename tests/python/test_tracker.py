@@ -1,5 +1,4 @@
 """ballast.experiments.tracker: per-grain state from the engines' events, colours by state."""
-import numpy as np
 import pytest
 
 pytest.importorskip('yade')

@@ -24,6 +24,7 @@ experiment is also a :class:`ballast.experiments.cyclic.Cyclic` (checkpoints eve
 jumping, the cycles.csv schema). The run's folder and the check of a state file: :mod:`.rundir`.
 """
 import gzip
+import math
 import os
 import shutil
 import socket
@@ -39,6 +40,8 @@ from ..runfiles import killedRunState, runStatus, syncDir
 from . import chain, timestep
 from .phases import Phases
 from .rundir import RunDirectory, StateFileError, checkStateFile, processAlive
+
+LOADED_STIFFNESS_MARGIN = 2.0  # [-] densityStep: the loading body's contacts may stiffen this much as grains crush
 
 
 class Experiment:
@@ -185,6 +188,42 @@ class Experiment:
         """run.json says 'finished': every output is written."""
         self.status = 'finished'
         self.dir.writeStatus('finished', **info)
+
+    def finishRun(self, write):
+        """The end every run has: its state saved (state-end.yade.gz), then write() writes every output and returns
+        the summary, then run.json 'finished'. Hours of loading are in the state: if the outputs fail, say how to get
+        them back (rebuildHint) and raise."""
+        end = os.path.join(self.out, 'state-end.yade.gz')
+        self.save(end)
+        try:
+            s = write()
+        except Exception as e:
+            self.say('the outputs could not be written (%s: %s); the loaded state is saved: %s' % (
+                type(e).__name__, e, self.rebuildHint(end)))
+            raise
+        self.markFinished(summary='summary.json')
+        return s
+
+    def rebuildHint(self, path):
+        """How to get a run's outputs back from its state at `path` (finishRun's message)."""
+        return '%s.reopen(%r) gives the run back' % (type(self).__name__, path)
+
+    def startTimeStep(self, loaded=None):
+        """The time-step options at the start of loading (experiments.timestep): the stiffness stepper, or density
+        scaling: every grain its own P-wave step densityStep / dtSafety, and the body that loads the grains
+        (`loaded`: a plate, a sleeper; None: kinematic platens) from the stiffness K of its contacts: a body of mass
+        M on springs K is stable below 2 sqrt(M / K); taken as sqrt(M / (LOADED_STIFFNESS_MARGIN K)), as more
+        contacts form under it when grains crush (None if it is not dynamic or touches nothing)."""
+        p = self.p
+        if p['timeStep'] == 'stiffness':
+            timestep.startStiffnessStep(p['dtSafety'])
+        if p['densityStep'] > 0:
+            own = {}
+            if loaded is not None:
+                b = O.bodies[loaded]
+                K = sum(i.phys.kn for i in b.intrs() if i.isReal)
+                own[loaded] = math.sqrt(b.state.mass / (LOADED_STIFFNESS_MARGIN * K)) if b.dynamic and K > 0 else None
+            timestep.startDensityScaling(self, p['densityStep'], p['densityStep'] / p['dtSafety'], own)
 
     def baseState(self):
         wall, cpu = self.seconds()

@@ -13,7 +13,6 @@ width axis; the load acts at its centre through YADE's InterpolatingDirectedForc
 step). Its permanent settlement is read at the end of each cycle (at the seating load), its resilient
 deflection as the largest settlement of the cycle less that.
 """
-import math
 import os
 
 import numpy as np
@@ -22,7 +21,7 @@ from yade.wrapper import FrictMat, InterpolatingDirectedForceEngine
 
 from ... import runtime
 from ...params import CYCLE_JUMP, requireWritableDir, validate
-from .. import chain, grains, preparation, scene, timestep
+from .. import chain, grains, preparation, scene
 from ..base import Experiment
 from ..cyclic import Cyclic
 from . import bed, outputs
@@ -32,7 +31,6 @@ from .recorder import LOAD, Recorder
 RECORDER, FRAMES = 'boxRecorder', 'boxFrames'
 SEAT_STILL = (0.01, 2e-6)     # ([s], [m]): seated when the sleeper moved less than this over that time
 SEAT_TIME = (0.02, 0.2)       # [s] shortest and longest seating (a bed of spheres creeps under a sleeper: docs/box.md)
-SLEEPER_STIFFNESS_MARGIN = 2.0  # [-] densityStep: the sleeper's contacts may stiffen this much as grains crush
 
 
 @runtime.persistent('BoxTest')
@@ -123,13 +121,7 @@ class BoxTest(Cyclic, Experiment):
         self.startCycles(rec.t0, history.period)
         plot.reset()
         plot.plots = {'settlement': ('F',)}   # YADE's live plot: the load against the settlement
-        if p['densityStep'] > 0:
-            s = O.bodies[rec.sleeper]
-            K = sum(i.phys.kn for i in s.intrs() if i.isReal)
-            own = math.sqrt(s.state.mass / (SLEEPER_STIFFNESS_MARGIN * K)) if K > 0 else None
-            timestep.startDensityScaling(self, p['densityStep'], p.scaledPWaveStep(), {rec.sleeper: own})
-        if p['timeStep'] == 'stiffness':
-            timestep.startStiffnessStep(p['dtSafety'])
+        self.startTimeStep(rec.sleeper)
         x, r, m = grains.arrays()
         self.initial = {'massInitial': float(np.sum(m)), 'nGrainsInitial': len(r), 'diameters': (2 * r).tolist(),
                         'masses': m.tolist(), 'zBase': rec.z0, 'ids': [b.id for b in grains.spheres()]}
@@ -221,9 +213,7 @@ class BoxTest(Cyclic, Experiment):
         self.grade(k)
         if p['vtk'] > 0:
             self.frame()   # the last
-        self.save(os.path.join(self.out, 'state-end.yade.gz'))
-        s = outputs.write(self)
-        self.markFinished(summary='summary.json')
+        s = self.finishRun(lambda: outputs.write(self))
         self.say('done: %d cycles, settlement %.2f mm (resilient %.3f mm), %d crushed, %d abraded; results in %s' % (
             k, 1e3 * s['settlement'], 1e3 * s['resilient'], s['nCrushed'], s['nAbraded'], self.out))
         return s

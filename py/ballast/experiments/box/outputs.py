@@ -147,7 +147,7 @@ def writeCycles(exp):
 
 def write(exp):
     """Every output file; returns the summary."""
-    rec, out = exp.recorder, exp.out
+    out = exp.out
     s = summary(exp)
     files = {'cycles.csv': cycleTable(exp), 'crushes.csv': crushes(exp)}
     g = pd.DataFrame([dict({'cycle': x['cycle'], 'Bg': x['Bg'], 'Br': x['Br'], 'BBI': x['BBI']},

@@ -36,7 +36,6 @@ from ...names import fmtTime
 from ...params import CYCLE_JUMP, validate
 from ...runfiles import runStatus, writeAtomic
 from .. import chain, grains
-from .. import timestep
 from ..base import Experiment
 from .. import cyclic
 from ..cyclic import Cyclic
@@ -47,7 +46,6 @@ from .parameters import OWNER, PARAMS, OedometerParameters
 from .probe import Probe, counter, degradingEngines, engine
 
 CONTAINMENT, CYCLE_CLOSED = 'oedoContainment', 'oedoJumpCycle'
-PLATE_STIFFNESS_MARGIN = 2.0  # [-] densityStep: the plate's contacts may stiffen this much as grains crush under it
 
 
 @runtime.persistent('Oedometer')
@@ -199,32 +197,29 @@ class Oedometer(Cyclic, Experiment):
             if self.p['vtk'] > 0:
                 self.outputs.vtk()  # the frame at the end of the cycle
             self.checkContainment()
-        end = os.path.join(self.out, 'state-end.yade.gz')
-        self.save(end)
-        try:
-            s = self.summary()
-            self.outputs.finish(s)
-        except Exception as e:  # hours of loading are in the state: say how to get the outputs back
-            self.say('the outputs could not be written (%s: %s); the loaded state is saved: Oedometer.rebuild(%r) '
-                     'writes them' % (type(e).__name__, e, end))
-            raise
-        if self.p['timing']:
-            self._writeTiming()
-        self.markFinished(summary='summary.json')
+        s = self.finishRun(self.writeOutputs)
         self.say('done in %s: peak F %.0f kN at delta %.2f mm, delta max %.2f mm, %d crushed, %d abraded, %d '
                  'steps; results in %s' % (fmtTime(s['wallSeconds']), s['peakForce'] / 1e3, s['deltaAtPeak'] * 1e3,
                                            s['deltaMax'] * 1e3, s['nCrushed'], s['nAbraded'], s['steps'], self.out))
         return s
+
+    def writeOutputs(self):
+        """Every output file (outputs.finish) and timing.txt; returns the summary."""
+        s = self.summary()
+        self.outputs.finish(s)
+        if self.p['timing']:
+            self._writeTiming()
+        return s
+
+    def rebuildHint(self, path):
+        return 'Oedometer.rebuild(%r) writes them' % path
 
     def startLoading(self):
         """The start of load(): seat the plate, add the engines and the recorders, save the state."""
         p = self.p
         self.loading.start(p, self.rig)
         self.addEngines(self.loading.t0)
-        if p['timeStep'] == 'stiffness':  # from the contacts' stiffness (YADE), instead of eq. 5's P-wave step
-            timestep.startStiffnessStep(p['dtSafety'])
-        if p['densityStep'] > 0:
-            self.scaleDensities()
+        self.startTimeStep(self.loading.plate)
         x, r, m = grains.arrays()
         self.initial = {'massInitial': float(np.sum(m)), 'nGrainsInitial': len(r),
                         'volumeGrains': float(np.sum(sphereVolume(r))), 'radii': r.tolist(), 'masses': m.tolist()}
@@ -242,17 +237,6 @@ class Oedometer(Cyclic, Experiment):
                  ' Fmax = %.4g N, f = %g Hz, dt = %.2e s' % (self.loading.z0, len(r), self.initial['massInitial'],
                                                             self.porosity0(), p['Fmax'], p['f'], O.dt))
         self.save(os.path.join(self.out, 'state-start.yade.gz'))
-
-    def scaleDensities(self):
-        """Density scaling from the start of loading (experiments.timestep): every grain's own P-wave step
-        densityStep / dtSafety, and the plate, if it moves, from the stiffness of its contacts: a body of
-        mass M on springs K is stable below 2 sqrt(M / K); taken as sqrt(M / (PLATE_STIFFNESS_MARGIN K)), as
-        more contacts form under it when grains crush."""
-        p = self.p
-        plate = O.bodies[self.loading.plate]
-        K = sum(i.phys.kn for i in plate.intrs() if i.isReal)
-        own = math.sqrt(plate.state.mass / (PLATE_STIFFNESS_MARGIN * K)) if plate.dynamic and K > 0 else None
-        timestep.startDensityScaling(self, p['densityStep'], p.scaledPWaveStep(), {self.loading.plate: own})
 
     # ------------------------------------------------------------------ engines and grains
     engine, degradingEngines, counter = staticmethod(engine), staticmethod(degradingEngines), staticmethod(counter)

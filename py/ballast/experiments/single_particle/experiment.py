@@ -14,7 +14,6 @@ touches another. Once a grain has crushed its fragments and platens are removed,
 is the only one. Gravity is off (a grain's weight is 1e-5 of its crushing force).
 """
 import math
-import os
 
 import numpy as np
 from yade import O, utils
@@ -23,7 +22,6 @@ from yade.wrapper import (Bo1_Box_Aabb, Bo1_Sphere_Aabb, ForceResetter, Ig2_Box_
 
 from ... import runtime
 from ...engines import BallastCrushEngine
-from .. import timestep
 from ..base import Experiment
 from ..scene import AVOID, GRAIN_MASK, LAWS, STEEL_MASK, materials  # platens pair with grains only (AVOID)
 from . import outputs
@@ -156,10 +154,7 @@ class SingleParticle(Experiment):
             runtime.callback(tester, 'step', iterPeriod=1, label='singleParticleTester')]
         O.dt = p['dtSafety'] * utils.PWaveTimeStep()
         self.adopt()
-        if p['densityStep'] > 0:  # the platens are kinematic: only the grains move under Newton
-            timestep.startDensityScaling(self, p['densityStep'], p['densityStep'] / p['dtSafety'], {})
-        if p['timeStep'] == 'stiffness':
-            timestep.startStiffnessStep(p['dtSafety'])
+        self.startTimeStep(None)   # the platens are kinematic: only the grains move under Newton
         self.say('prepared %d grains of %.1f-%.1f mm, platens closing at %g m/s, dt = %.3g s' % (
             len(d), 1e3 * d.min(), 1e3 * d.max(), p['speed'], O.dt))
         return self
@@ -178,14 +173,17 @@ class SingleParticle(Experiment):
         self.runUntil(tester.finished, tEnd=tEnd, phase='crush', checkEvery=50, simSpan=tEnd - O.time,
                       simStart=O.time, extra=lambda: '%d of %d grains done' % (
                           sum(r is not None for r in tester.result), len(tester.result)))
-        self.save(os.path.join(self.out, 'state-end.yade.gz'))
-        t = self.table()
-        s = outputs.summary(self, t)
-        outputs.write(self, s, t)
-        self.markFinished(summary='summary.json')
+        s = self.finishRun(self.writeOutputs)
         spread = ('F/d^2 %.3g-%.3g MPa' % (s['forceOverD2Min'] / 1e6, s['forceOverD2Max'] / 1e6) if s['nCrushed']
                   else 'none crushed by maxStrain')
         self.say('done: %d of %d grains crushed, %s; results in %s' % (s['nCrushed'], s['n'], spread, self.out))
+        return s
+
+    def writeOutputs(self):
+        """strengths.csv, curves.csv, the figures and summary.json (outputs.write); returns the summary."""
+        t = self.table()
+        s = outputs.summary(self, t)
+        outputs.write(self, s, t)
         return s
 
     def summary(self):
