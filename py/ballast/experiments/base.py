@@ -39,7 +39,8 @@ from ..engines import BallastAbrasionEngine, BallastCrushEngine
 from . import chain, grains, timestep
 from .cyclejump import CycleJumper
 from ..names import runDirName
-from ..params import CRUSH, ParamError, requireWritableDir
+from ..engineparams import CRUSH
+from ..params import ParamError, requireWritableDir
 from ..study.files import killedRunState, runStatus, syncDir, writeAtomic
 from .phases import Phases
 

@@ -23,7 +23,8 @@ from yade.wrapper import FrictMat, InterpolatingDirectedForceEngine
 
 from ... import runtime
 from ...engines import BallastAbrasionEngine, BallastCrushEngine
-from ...params import CYCLE_JUMP, requireWritableDir, validate
+from ...params import requireWritableDir, validate
+from ..parameters import CYCLE_JUMP
 from .. import chain, grains, preparation, timestep
 from ..base import Experiment
 from ..oedometer import scene

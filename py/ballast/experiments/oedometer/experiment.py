@@ -33,7 +33,8 @@ from yade import O
 from ... import grading, runtime
 from ...geometry import sphereVolume
 from ...names import fmtTime
-from ...params import CYCLE_JUMP, validate
+from ...params import validate
+from ..parameters import CYCLE_JUMP
 from ...study.files import runStatus, writeAtomic
 from .. import chain, grains
 from .. import timestep
