@@ -92,10 +92,10 @@ def tableValues(declaration):
     (description, d.id) as yade-batch does. Else {}."""
     if 'YADE_BATCH' not in os.environ:   # YADE's utils.runningInBatch(), without YADE: a command line reads without it
         return {}
-    from yade import utils
     from ..study.table import tableRow
     tableFile, line = os.environ['YADE_BATCH'].split(':')[:2]
-    cells = tableRow(tableFile, int(line), declaration)
+    cells = tableRow(tableFile, int(line), declaration)   # a bad column or cell is named before YADE is asked
+    from yade import utils
     utils.readParamsFromTable(noTableOk=True, **{k: p.default for k, p in declaration.params.items()})
     return cells
 
