@@ -3,7 +3,7 @@ every parameter of the engines, of every experiment (ballast.experiments) and of
 allowed range and default, and the bounds each experiment checks between its parameters. tests/python/test_paramdoc.py keeps the page in
 step with the code. Needs no YADE."""
 from . import experiments
-from .params import ABRASION, CRUSH, PERIODIC
+from .engineparams import ABRASION, CRUSH, PERIODIC
 from .study.options import OPTIONS
 
 

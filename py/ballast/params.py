@@ -1,15 +1,22 @@
-"""The parameter system of the package: every parameter (of the engines, the oedometer, the command
-line and the study tables) is one :class:`Param`, declared once with its unit, default, allowed range
+"""The parameter system of the package: every parameter (of the engines, the experiments, the command
+lines and the study tables) is one :class:`Param`, declared once with its unit, default, allowed range
 and doc, and validated in one place, :func:`validate`. Text (a command-line value, a table cell) is
-turned into a value by :meth:`Param.fromText` and then validated like any Python value.
+turned into a value by :meth:`Param.fromText`, in the spellings --help gives only, and then validated
+like any Python value. A checked set of them is a :class:`Parameters`.
+
+The declarations live with what they configure: the engines' in :mod:`ballast.engineparams`, what every
+experiment shares in :mod:`ballast.experiments.parameters`, each experiment's own in its folder.
 
 This module needs no YADE: the study runner reads the declarations in plain ``/usr/bin/python3``.
 """
 import ast
 from collections.abc import Mapping
+import io
 import math
 import numbers
 import os
+import re
+import tokenize
 
 from . import _ballast
 
@@ -21,6 +28,15 @@ class ParamError(ValueError):
     def __init__(self, name, message):
         ValueError.__init__(self, message)
         self.name = name
+
+
+class TextError(ValueError):
+    """Text written in a spelling the parameters do not read (0x10, yes); `expected`: what is read instead,
+    in words (None: the declaration's range, written in decimal)."""
+
+    def __init__(self, expected=None):
+        ValueError.__init__(self, expected)
+        self.expected = expected
 
 
 class Param:
@@ -44,8 +60,27 @@ class Param:
 
 
 # ---------------------------------------------------------------- text -> value
+# Text (a command line, a table cell) is read in the spellings --help gives: a number in decimal (1e6, 0.5, 16),
+# a flag 0 or 1. Python's other forms of a number (0x10, 0o7, 0b1, 1_000, 1j) and other words for a flag (yes,
+# True) are refused: a typo must not become another value silently.
+DECIMAL_ONLY = 'written in decimal (hexadecimal, octal, binary, complex and 1_000 forms are refused)'
+_NOT_DECIMAL = re.compile(r'^0[xob]|_|j$', re.IGNORECASE)
+
+
+def _decimal(text):
+    """Whether every number in `text` is written in decimal (text that is no Python is left to the check)."""
+    try:
+        return not any(t.type == tokenize.NUMBER and _NOT_DECIMAL.search(t.string)
+                       for t in tokenize.generate_tokens(io.StringIO(text).readline))
+    except (tokenize.TokenError, SyntaxError):
+        return True
+
+
 def literal(text):
-    """A Python literal as YADE's table reader evaluates cells (1e6, 'planar4'); other text as is."""
+    """A Python literal as YADE's table reader evaluates cells (1e6, 'planar4', [0.02, 0.04]), its numbers
+    in decimal only (TextError); other text as is."""
+    if not _decimal(text.strip()):
+        raise TextError()
     try:
         return ast.literal_eval(text.strip())
     except (ValueError, SyntaxError):
@@ -59,9 +94,11 @@ def text(text):
 
 
 def flag(text):
-    s = text.strip().strip('\'"').lower()
-    return {'1': True, 'true': True, 'yes': True, 'on': True, '0': False, 'false': False, 'no': False,
-            'off': False}.get(s, text)
+    """A flag: 0 or 1 (quoted in a table cell or not); anything else is TextError."""
+    s = text.strip().strip('\'"')
+    if s not in ('0', '1'):
+        raise TextError('0 or 1')
+    return s == '1'
 
 
 # ---------------------------------------------------------------- checks: value -> value or raise
@@ -74,10 +111,6 @@ def _number(v):
     return v
 
 
-def anyNumber(v):
-    return _number(v)
-
-
 def positive(v):
     v = _number(v)
     if v <= 0:
@@ -88,13 +121,6 @@ def positive(v):
 def nonNegative(v):
     v = _number(v)
     if v < 0:
-        raise ValueError
-    return v
-
-
-def openUnit(v):
-    v = _number(v)
-    if not 0 < v < 1:
         raise ValueError
     return v
 
@@ -133,6 +159,7 @@ def intBetween(lo, hi):
 
 
 INT64_MAX, INT32_MAX = 2 ** 63 - 1, 2 ** 31 - 1
+NUMBER_POSITIVE, NUMBER_NONNEGATIVE = 'a finite number > 0', 'a finite number >= 0'
 
 
 def positiveInt(v):
@@ -233,11 +260,15 @@ def requireWritableDir(owner, name, path):
 
 def validate(owner, table, name, value, text=False):
     """Checked value of parameter `name`, or a ParamError naming the owner, parameter, value and range.
-    text=True: a string value is text from a command line or a table, read by the parameter's parse;
-    else values are taken as Python gives them (a string where a number is due is an error)."""
+    text=True: a string value is text from a command line or a table, read by the parameter's parse (in the
+    documented spellings only); else values are taken as Python gives them (a string where a number is due is
+    an error)."""
     p = table[name]
     try:
         return p.check(p.fromText(value) if text else value)
+    except TextError as e:
+        expected = e.expected or '%s [%s], %s' % (p.allowed, p.unit, DECIMAL_ONLY)
+        raise ParamError(name, '%s: %s = %r is not allowed: expected %s' % (owner, name, value, expected)) from None
     except (TypeError, ValueError, RuntimeError):
         raise ParamError(name, '%s: %s = %r is not allowed: expected %s [%s]' % (owner, name, value, p.allowed, p.unit)) \
             from None
@@ -254,169 +285,6 @@ def validateAll(owner, table, values, text=False):
         raise ParamError(missing[0], '%s: parameter(s) %s required: %s' % (
             owner, ', '.join(missing), '; '.join(table[k].docline(k) for k in missing)))
     return {k: validate(owner, table, k, values.get(k, p.default), text) for k, p in table.items()}
-
-
-def docTable(table):
-    return '\n'.join('    ' + p.docline(n) for n, p in table.items())
-
-
-# ---------------------------------------------------------------- the engines' parameters
-NUMBER_POSITIVE, NUMBER_NONNEGATIVE = 'a finite number > 0', 'a finite number >= 0'
-
-COMMON = {
-    'rMin': Param(0.0, 'm', 'grains with a radius below rMin never degrade (fragments included)', *coreRange('rMin')),
-    'mask': Param(0, '-', 'groupMask selecting the checked grains (dynamic spheres); 0 = all', intBetween(0, INT32_MAX),
-                  'an integer in [0, 2^31 - 1] (a YADE groupMask)'),
-    'adjustDt': Param(True, '-', 'after grains shrink, scale O.dt by the drop of utils.PWaveTimeStep() '
-                      '(eq. 5: dt_cr ~ r sqrt(rho/E)); with a time stepper active, until its next update',
-                      boolean, 'True or False', flag),
-    'scaledPWaveStep': Param(0.0, 's', 'density scaling: every grain the engine creates, shrinks or grows gets the '
-                             "YADE State.densityScaling that makes its own P-wave step r sqrt(rho/E) this long (needs "
-                             'NewtonIntegrator.densityScaling); O.dt is then not scaled (adjustDt has no effect); '
-                             '0 = no density scaling', nonNegative, NUMBER_NONNEGATIVE),
-}
-
-# every experiment's time step options (ballast.experiments.timestep)
-TIME_STEP = Param('pwave', '-', "the time step: 'pwave' (dtSafety x YADE's PWaveTimeStep of the smallest grain, eq. 5, "
-                  "scaled down after each replacement: the paper's) or 'stiffness' (YADE's GlobalStiffnessTimeStepper, "
-                  "safety dtSafety, from the contacts' stiffness every 10 steps; after a replacement scaled as for "
-                  "pwave until its next update)", choice('pwave', 'stiffness'), "'pwave' or 'stiffness'", text)
-DENSITY_STEP = Param(0.0, 's', "density scaling: the loading's time step; every grain, fragments included, gets "
-                     "YADE's State.densityScaling so that its own P-wave step r sqrt(rho/E) reaches densityStep / "
-                     "dtSafety (never made lighter); other moving bodies as the experiment says; 0 = off (the "
-                     "paper's). At least the paper's step", nonNegative, NUMBER_NONNEGATIVE)
-
-
-def checkDensityStep(bad, step, paperStep, timeStep):
-    """The cross-check of every experiment: densityStep 0, or at least the paper's step [s] with timeStep pwave."""
-    if step > 0 and timeStep != 'pwave':
-        bad('densityStep', "%g s with timeStep = %r: density scaling sets the step itself; give timeStep 'pwave' or "
-                           'densityStep 0' % (step, timeStep))
-    if 0 < step < paperStep:
-        bad('densityStep', "%g s is below the paper's step %.3g s (dtSafety PWaveTimeStep of the smallest grain): "
-                           'nothing would be scaled; give 0 (off) or at least %.3g s' % (step, paperStep, paperStep))
-
-
-# cycle jumping, beyond the paper (docs/cycles.md; the law is the C++ core's pkg/CycleJump.hpp): an option of every
-# cyclic experiment
-CYCLE_JUMP = {
-    'jump': Param(False, '-', 'cycle jumping: once each grain\'s fatigue damage grows steadily over the last jumpWindow '
-                  'simulated cycles, advance it over many cycles at once, never over a crush (the cycle a grain fails in '
-                  'is simulated), then simulate again; the settlement of the jumped cycles is extrapolated from a law '
-                  'fitted to the simulated ones, not simulated (docs/cycles.md). Needs fatigue',
-                  boolean, 'True or False', flag),
-    'jumpWindow': Param(10, 'cycles', 'simulated cycles without a crush or an abrasion whose damage gives each grain\'s '
-                        'rate per cycle; the rates of its two halves tell how steady it is', *coreRange('jumpWindow')),
-    'jumpSteady': Param(0.2, '-', 'a grain whose rate differs between the window\'s halves by |b - a| limits a jump to '
-                        'jumpSteady jumpMaxDamage / |b - a| cycles (the damage it extrapolates is that uncertain)',
-                        *coreRange('jumpSteady')),
-    'jumpMaxDamage': Param(0.05, '-', 'no grain\'s damage D may grow by more than this in one jump',
-                           *coreRange('jumpMaxDamage')),
-    'jumpMargin': Param(1, 'cycles', 'simulated cycles left between the end of a jump and the cycle in which the first '
-                        'grain is predicted to fail (at its largest stress ratio of the window)', *coreRange('jumpMargin')),
-    'jumpGrowth': Param(1.0, '-', 'a jump takes the cycle count N to at most (1 + jumpGrowth) N: cycles are simulated '
-                        'again in every stretch of log N, where the bed may change (1: at most doubling)',
-                        *coreRange('jumpGrowth')),
-    'jumpDriftNoise': Param(2.0, '-', 'a grain below the endurance ratio whose peaks rise between the window\'s halves '
-                            'drifts towards damage; the rise counts beyond this many standard errors of it (from the '
-                            'peaks\' scatter within the halves; 0: the whole rise)', *coreRange('jumpDriftNoise')),
-    'jumpDriftDamage': Param(0.0, '-', 'a grain below the endurance ratio whose peaks drift up limits a jump to the '
-                             'cycles in which it would collect at most this damage unseen (a bound on the fatigue law '
-                             'summed along the drift); 0: its peaks may not reach the endurance ratio, the validated '
-                             'rule (longer jumps in a bed still evolving are less conservative: docs/cycles.md)',
-                             *coreRange('jumpDriftDamage')),
-    'jumpAfter': Param(0, 'cycles', 'no jump before this cycle: the cycles a bed needs to shake down, simulated',
-                       intBetween(0, 10 ** 9), 'an integer in [0, 10^9]'),
-    'jumpStates': Param('all', '-', "the states saved around each jump (state-jump<K>-before/after.yade.gz, each the "
-                        "size of a state): 'all' keeps every jump's pair, 'last' only the latest jump's (the pair before "
-                        "is removed once the new one is written, its names blanked in jumps.csv)", choice('all', 'last'),
-                        "'all' or 'last'", text),
-}
-
-
-def checkCycleJump(bad, p):
-    """The cross-check of every cyclic experiment: jumping needs the fatigue damage it advances."""
-    if p['jump'] and not (p['fatigue'] and p['crush']):
-        bad('jump', 'cycle jumping advances fatigue damage: it needs fatigue = 1 and crush = 1')
-
-# PyRunner's (YADE PeriodicEngine's) own settings, checked as the engines' parameters are: a negative or
-# NaN period switches a PeriodicEngine off without a word
-PERIODIC = {
-    'iterPeriod': Param(0, 'steps', 'check every iterPeriod steps (0 = not by steps)', intBetween(0, INT64_MAX),
-                        'an integer in [0, 2^63 - 1]'),
-    'virtPeriod': Param(0.0, 's', 'check every virtPeriod of simulated time (the paper\'s T_c; 0 = not by time)',
-                        nonNegative, NUMBER_NONNEGATIVE),
-    'realPeriod': Param(0.0, 's', 'check every realPeriod of wall-clock time (0 = not by wall time)', nonNegative,
-                        NUMBER_NONNEGATIVE),
-    'nDo': Param(-1, '-', 'number of checks to run (-1 = no limit)', intBetween(-1, INT64_MAX),
-                 'an integer in [-1, 2^63 - 1]'),
-    'initRun': Param(False, '-', 'also check at the first step', boolean, 'True or False', flag),
-    'dead': Param(False, '-', 'switched off', boolean, 'True or False', flag),
-    'label': Param('', '-', 'name of the engine in the yade namespace', anyText, 'a name'),
-    'firstIterRun': Param(0, 'steps', 'first step a check may run at', intBetween(0, INT64_MAX),
-                          'an integer in [0, 2^63 - 1]'),
-    'ompThreads': Param(-1, '-', 'OpenMP threads of the engine (-1 = YADE\'s)', intBetween(-1, 1024),
-                        'an integer in [-1, 1024]'),
-}
-
-CRUSH = dict({
-    'ft0': Param(None, 'Pa m^m', 'reference strength f_t0 of eq. 4, f_t = ft0 / r^m', *coreRange('ft0')),
-    'm': Param(1.0, '-', 'size-effect exponent of eq. 4 (the paper: 1; 3 / m is the Weibull modulus of the size '
-               'effect, 1 at m = 3)', *coreRange('m')),
-    'pattern': Param(6, '-', 'fragment layout (Fig. 1): 4 (tetrahedral), 6 (octahedral), 14, or planar4 '
-                     '(four in a plane, the paper\'s 70 % loss)', pattern, "4, 6, 14, 'tetra4', 'planar4', "
-                     "'octa6' or 'fill14'"),
-    'seed': Param(0, '-', 'seed of the random orientation of fragments (reproducible)', *coreRange('seed')),
-    # beyond the paper (docs/strength.md): which stress crushes a grain, and scattered strengths
-    'criterion': Param('vonMises', '-', "the stress compared with f_t: 'vonMises' (eq. 2, the paper), "
-                       "'maxContactForce' (the largest normal contact force over d^2, de Bono & McDowell 2016) or "
-                       "'majorPrincipal' (the largest principal compressive stress of eq. 3)",
-                       choice(*_ballast.criterionNames()), oneOf(_ballast.criterionNames()), text),
-    'weibullModulus': Param(0.0, '-', 'Weibull modulus k of the grains\' strengths: each grain\'s f_t is ft0 / r^m '
-                            'times (-ln U)^(1/k), U uniform from (seed, body id), so eq. 4 is the characteristic '
-                            'strength at every size; 0: every grain exactly ft0 / r^m (the paper)',
-                            *coreRange('weibullModulus')),
-    'keep': Param('none', '-', "what a replacement keeps besides the fragments' own volume: 'none' (the paper: "
-                  "the mass of the lost volume is lost), 'mass' (the fragments' mass and inertia are scaled up "
-                  "so that the parent's mass and momentum are kept), 'volume' (the fragments grow in place back "
-                  "to the parent's volume over growTime)", choice('none', 'mass', 'volume'),
-                  "'none', 'mass' or 'volume'", text),
-    'growTime': Param(0.01, 's', "keep='volume': simulated time over which the fragments grow back to the parent's "
-                      "volume, a step at every check (0: at the next check at once, which throws neighbours out)",
-                      nonNegative, NUMBER_NONNEGATIVE),
-    'maxPerCheck': Param(0, '-', 'crush at most this many grains per check, the most overloaded first (the '
-                         'stress over the strength); the others wait for the next check if still over it. 0: every '
-                         'grain over its strength at once (the paper)', intBetween(0, INT64_MAX),
-                         'an integer in [0, 2^63 - 1]'),
-    # fatigue, beyond the paper (docs/fatigue.md): Basquin-Miner damage D on the peaks of s = sigma_e / f_t
-    'fatigue': Param(False, '-', 'fatigue: each peak s_p of a grain\'s stress ratio s = sigma_e / f_t takes '
-                     '(1 - s_p) s_p^b off its strength (D) and it crushes when s > 1 - D, after s_p^-b equal peaks '
-                     '(docs/fatigue.md); fragments start undamaged',
-                     boolean, 'True or False', flag),
-    'fatigueExponent': Param(30.0, '-', 'Basquin exponent b: a constant peak s_p >= fatigueEndurance crushes a '
-                             'grain after N_f = s_p^-b peaks', *coreRange('fatigueExponent')),
-    'fatigueEndurance': Param(0.5, '-', 'endurance ratio: peaks of s below it do no damage',
-                              *coreRange('fatigueEndurance')),
-    'fatigueHysteresis': Param(0.05, '-', 'a peak of s ends when s falls this much below it, and the next rise '
-                               'starts when s climbs this much above its minimum', *coreRange('fatigueHysteresis')),
-}, **COMMON)
-
-ABRASION = dict({
-    'strength': Param(None, 'Pa', 'contact pressure that abrades a grain (eq. 6 compares the maximum Hertz '
-                      'pressure p0 of eq. 7 with it; kept apart from ft0, which is in Pa m)', *coreRange('strength')),
-    'gamma': Param(0.9, '-', 'radius reduction factor: r_new = gamma r_old (an abrasion removes a surface layer, '
-                   'at most half the radius)', between(0.5, 1), 'a number in [0.5, 1)'),
-    'prefilter': Param(True, '-', 'read only the contacts of grains whose bound on p0 exceeds the strength (same '
-                       'decisions). Hertz-Mindlin contacts: a fabric-stress bound (ballast.abrasionBound) and one from '
-                       'the largest overlap ratio; linear contacts (FrictPhys): eq. 7 is 3 kn / (2 pi R), a constant '
-                       '(harvest.linearBound). It stays off for other contact laws, and once a full read finds a '
-                       'bound broken', boolean, 'True or False', flag),
-    'verifyPeriod': Param(50, '-', 'with the prefilter, every verifyPeriod-th check reads all contacts anyway '
-                          'and checks the bound against them', positiveInt, 'an integer >= 1'),
-    'maxCandidates': Param(0.5, '-', 'with the prefilter, when more than this fraction of the grains are '
-                           'candidates all contacts are read in one pass instead (reading grain by grain costs '
-                           'about 1.6 times more per grain)', unitInterval, 'a number in [0, 1]'),
-}, **COMMON)
 
 
 # ---------------------------------------------------------------- checked parameters as one value

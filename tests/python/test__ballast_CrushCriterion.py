@@ -7,7 +7,8 @@ import numpy as np
 import pytest
 
 import ballast._ballast as B
-from ballast.params import CRUSH, ParamError, validate
+from ballast.engineparams import CRUSH
+from ballast.params import ParamError, validate
 
 R, F = 0.02, (3e4, 2e4, 1e4)
 K = 3 / (2 * math.pi * R ** 2)

@@ -8,7 +8,9 @@ import pytest
 
 import ballast._ballast as B
 from ballast import params
-from ballast.params import ABRASION, CRUSH, CYCLE_JUMP, ParamError, validate
+from ballast.engineparams import ABRASION, CRUSH
+from ballast.experiments.parameters import CYCLE_JUMP
+from ballast.params import ParamError, validate
 
 INF = math.inf
 # (lower, upper, lowerClosed, upperClosed, integer, zeroAllowed, words), as the engines' documentation gives them

@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 import ballast._ballast as B
-from ballast.params import CRUSH
+from ballast.engineparams import CRUSH
 
 
 def test_size_strength_eq4():

@@ -1,7 +1,7 @@
 """ballast.experiments.box: the box test in YADE on a small box (about 250 grains of 20-30 mm, soft
 grains for a long step, 40 Hz): the sleeper at rest carries the applied load and its weight; a short run
 end to end writes every output, its mass ledger is exact, its crushes are all mapped, its cycles and
-gradings are where they should be; a saved state reopens and goes on; the command line."""
+gradings are where they should be; a saved state reopens and goes on (the command line: test_commandline.py)."""
 import json
 import os
 import shutil
@@ -16,7 +16,6 @@ from ballast.experiments.box import BoxTest  # noqa: E402
 from ballast.experiments.box.zones import ZONES  # noqa: E402
 from ballast.params import ParamError  # noqa: E402
 
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 SMALL = dict(boxLength=0.3, boxWidth=0.12, bedDepth=0.1, layers=2, sleeperWidth=0.1, sleeperHeight=0.05, sleeperMass=5,
              dMin=0.02, dMax=0.03, young=3e9, prepYoung=3e8, f=40, seatLoad=300, peakLoad=4000, cycles=3, ft0=3.5e4,
              rMin=0.008, strength=1.5e10, progress=60)
@@ -271,17 +270,6 @@ def test_a_run_in_slices_goes_on_from_a_state_and_refuses_other_physics(run, tmp
     assert BoxTest.reopen(end2, readOnly=True).p['continueFrom'] == first
     s3 = BoxTest(results=str(tmp_path), runId='slice3', continueFrom=end2, **dict(SMALL, cycles=1)).run()
     assert s3['cycles'] == 5 and s3['params']['continueFrom'] == end2
-
-
-def test_the_command_line_refuses_a_bad_value(tmp_path):
-    script = os.path.join(ROOT, 'scripts', 'box_test.py')
-    env = dict(os.environ, OMP_NUM_THREADS='1')
-    bad = subprocess.run(['yade', '-n', '-x', script, '--seatLoad', '5e4', '--results', str(tmp_path)],
-                         capture_output=True, text=True, timeout=300, env=env, cwd=str(tmp_path))
-    assert bad.returncode == 2 and 'bad parameter seatLoad: BoxTest: seatLoad = 50000.0 is not allowed' in bad.stderr
-    assert not os.listdir(str(tmp_path))   # refused before any work: nothing written
-    helped = subprocess.run(['yade', '-n', '-x', script, '--help'], capture_output=True, text=True, timeout=300, env=env)
-    assert '--loadFile' in helped.stdout and '--sleeperMass' in helped.stdout
 
 
 def test_a_sleeper_that_reaches_the_floor_stops_the_run(tmp_path):

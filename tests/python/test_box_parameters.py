@@ -18,7 +18,7 @@ from ballast.params import ParamError
     ({'rMin': 0.03}, 'rMin', 'larger than the largest grain radius'),
     ({'prepYoung': 1e12}, 'prepYoung', 'must not exceed young'),
     ({'f': 5e4}, 'f', 'fewer than 100'),
-    ({'cycles': 10 ** 7}, 'cycles', 'more than 1e+09'),
+    ({'cycles': 10 ** 7}, 'cycles', 'more than the 1e+09 a run may take'),
     ({'Tc': 1.0}, 'Tc', 'longer than the load cycle'),
     ({'abrasionPeriod': 10 ** 6}, 'abrasionPeriod', 'longer than the load cycle'),
     ({'rollingFriction': 0.2, 'law': 'hertz'}, 'rollingFriction', "needs law = 'linear'"),

@@ -6,7 +6,8 @@ import pytest
 
 from ballast.oedometer import parameters
 from ballast.oedometer.parameters import PACKING_KEYS, PARAMS, check, packingKey
-from ballast.params import CRUSH, ParamError
+from ballast.engineparams import CRUSH
+from ballast.params import ParamError
 
 
 def test_defaults_are_the_declared_ones():

@@ -3,7 +3,7 @@ import os
 
 from ballast import paramdoc
 from ballast.oedometer.parameters import PARAMS
-from ballast.params import ABRASION, CRUSH, PERIODIC
+from ballast.engineparams import ABRASION, CRUSH, PERIODIC
 
 DOC = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), 'docs',
                    'parameters.md')

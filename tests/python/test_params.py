@@ -4,7 +4,8 @@ import math
 import pytest
 
 from ballast import params
-from ballast.params import ABRASION, CRUSH, Param, ParamError, validate, validateAll
+from ballast.engineparams import ABRASION, CRUSH
+from ballast.params import Param, ParamError, validate, validateAll
 
 TABLE = {
     'x': Param(1.0, 'm', 'a length', params.positive, 'a finite number > 0'),
@@ -40,15 +41,40 @@ def test_bad_integers(raw):
         validate('T', TABLE, 'n', raw, text=True)
 
 
-@pytest.mark.parametrize('raw,value', [('1', True), ('0', False), ('yes', True), ('off', False), (False, False)])
+@pytest.mark.parametrize('raw,value', [('1', True), ('0', False), (" '1' ", True), (False, False)])
 def test_flags(raw, value):
     assert validate('T', TABLE, 'on', raw, text=True) is value
 
 
-@pytest.mark.parametrize('raw', ['maybe', '2'])
-def test_bad_flag(raw):
-    with pytest.raises(ParamError, match="on = '%s'" % raw):
+@pytest.mark.parametrize('raw', ['maybe', '2', 'yes', 'off', 'True', '1.0'])
+def test_a_flag_is_0_or_1(raw):
+    """Text is read in the spelling --help gives: other words for a flag are refused, saying what is read."""
+    with pytest.raises(ParamError) as e:
         validate('T', TABLE, 'on', raw, text=True)
+    assert str(e.value) == "T: on = %r is not allowed: expected 0 or 1" % raw
+
+
+@pytest.mark.parametrize('raw', ['0x10', '0X1f', '0o7', '0b1', '1_000', '1j', '2.5J', '-0x10', '[0x10]'])
+def test_numbers_are_decimal_only(raw):
+    with pytest.raises(ParamError) as e:
+        validate('T', TABLE, 'x', raw, text=True)
+    assert str(e.value) == ("T: x = %r is not allowed: expected a finite number > 0 [m], written in decimal (hexadecimal, "
+                            "octal, binary, complex and 1_000 forms are refused)" % raw)
+
+
+@pytest.mark.parametrize('raw,value', [('16', 16), ('1e1', 10), ('0', None), ('007', None)])
+def test_decimal_integers(raw, value):
+    """'0' is read and refused by the range (n >= 1); '007' is no Python number and stays text, refused as one."""
+    if value is None:
+        with pytest.raises(ParamError, match=r"expected an integer >= 1 \[-\]$"):
+            validate('T', TABLE, 'n', raw, text=True)
+    else:
+        assert validate('T', TABLE, 'n', raw, text=True) == value
+
+
+def test_text_of_a_path_is_not_read_as_a_number():
+    """'0x10' is a name a path may have: only numbers are read strictly."""
+    assert validate('T', TABLE, 'name', '0x10', text=True) == '0x10'
 
 
 @pytest.mark.parametrize('name,raw', [('x', '2.5'), ('on', 1), ('on', 'yes'), ('n', '3')])

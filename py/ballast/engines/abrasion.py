@@ -7,7 +7,7 @@ from yade import O, Vector3
 
 from .. import _ballast, runtime
 from ..geometry import sphereVolume
-from ..params import ABRASION
+from ..engineparams import ABRASION
 from .base import BallastEngine, docstring, resizeGrain
 from .prefilter import Prefilter
 

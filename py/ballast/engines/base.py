@@ -16,7 +16,8 @@ from yade.wrapper import PyRunner
 
 from .. import contacts, harvest, runtime
 from ..densityscaling import scaleDensities
-from ..params import PERIODIC, ParamError, validate, validateAll
+from ..engineparams import PERIODIC
+from ..params import ParamError, validate, validateAll
 
 PERIODS = ('iterPeriod', 'virtPeriod', 'realPeriod')
 PERIODIC_STATE = ('iterLast', 'virtLast', 'realLast', 'nDone')

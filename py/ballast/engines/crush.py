@@ -8,7 +8,7 @@ from yade import O, Vector3, utils
 
 from .. import _ballast, energy, harvest, runtime
 from ..geometry import sphereVolume
-from ..params import CRUSH
+from ..engineparams import CRUSH
 from .base import BallastEngine, docstring
 from .fatigue import FatigueState
 from .replacements import ENERGY_AFTER_STEPS, Replacements

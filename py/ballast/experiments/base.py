@@ -35,7 +35,8 @@ from yade import O
 from .. import runtime
 from ..engines import BallastAbrasionEngine, BallastCrushEngine
 from ..names import runDirName
-from ..params import CRUSH, ParamError, requireWritableDir
+from ..engineparams import CRUSH
+from ..params import ParamError, requireWritableDir
 from ..runfiles import killedRunState, runStatus, syncDir
 from . import chain, timestep
 from .phases import Phases

@@ -1,12 +1,15 @@
 """What every experiment's command line shares: a ``--name value`` option per declared parameter (in full,
 each once), negative numbers as values, argparse's errors in one line naming the option and what is
-allowed, the yade-batch row read by the study's table reader, and everything checked once by the
-experiment's Parameters (text=True) before any work."""
+allowed, the yade-batch row read by the table reader (ballast.tables), and everything checked once by the
+experiment's Parameters (text=True: numbers in decimal, flags 0 or 1, as ballast.params reads all text)
+before any work. A refusal is one line on stderr and exit status 2."""
 import argparse
 import difflib
 import os
 import re
 import sys
+
+from ..params import ParamError
 
 _NUMBER = re.compile(r'^-(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?$|^-(inf|nan)$', re.IGNORECASE)
 
@@ -26,7 +29,11 @@ class OneLineParser(argparse.ArgumentParser):
         self.script, self.params = script, params
 
     def error(self, message):
-        sys.stderr.write('%s: %s\n' % (self.script, explain(message, self.params)))
+        self.refuse(explain(message, self.params))
+
+    def refuse(self, words):
+        """The one line of a refusal on stderr, then exit status 2."""
+        sys.stderr.write('%s: %s\n' % (self.script, words))
         sys.exit(2)
 
 
@@ -83,12 +90,12 @@ def tableValues(declaration):
     """Under yade-batch (YADE_BATCH=table:line): the row's raw cells (ballast.tables.tableRow: every
     column a parameter, every cell readable, named otherwise), then YADE's readParamsFromTable sets O.tags
     (description, d.id) as yade-batch does. Else {}."""
-    from yade import utils
-    if not utils.runningInBatch():
+    if 'YADE_BATCH' not in os.environ:   # YADE's utils.runningInBatch(), without YADE: a command line reads without it
         return {}
     from ..tables import tableRow
     tableFile, line = os.environ['YADE_BATCH'].split(':')[:2]
-    cells = tableRow(tableFile, int(line), declaration)
+    cells = tableRow(tableFile, int(line), declaration)   # a bad column or cell is named before YADE is asked
+    from yade import utils
     utils.readParamsFromTable(noTableOk=True, **{k: p.default for k, p in declaration.params.items()})
     return cells
 
@@ -99,26 +106,27 @@ def parse(ap, argv):
 
 
 def readParams(ap, argv, declaration):
-    """defaults <- yade-batch row <- command line, checked once (ParamError names a bad one)."""
-    values = tableValues(declaration)
-    values.update({k: v for k, v in parse(ap, argv).items() if v is not None and k in declaration.params})
-    return declaration.check(values, text=True)
+    """defaults <- yade-batch row <- command line, checked once by the declaration (text=True). A bad value,
+    option or table: one line naming it on stderr, exit status 2 (ap: a OneLineParser)."""
+    from ..tables import TableError
+    try:
+        values = tableValues(declaration)
+        values.update({k: v for k, v in parse(ap, argv).items() if v is not None and k in declaration.params})
+        return declaration.check(values, text=True)
+    except ParamError as e:
+        ap.refuse('bad parameter %s: %s' % (e.name, e))
+    except TableError as e:  # a yade-batch table YADE would misread
+        ap.refuse('bad table: %s' % e)
 
 
 def experiment(ap, argv, declaration, experimentClass):
     """The experiment of a command line: its parameters read and checked (readParams), built by
     experimentClass() (a callable giving the class: its module needs YADE) and its outputs checked writable,
     before any work. A bad value: one line naming the parameter, exit status 2."""
-    from ..params import ParamError
-    from ..tables import TableError
+    params = readParams(ap, argv, declaration)
     try:
-        params = readParams(ap, argv, declaration)
         exp = experimentClass()(parameters=params)   # checked once, by readParams
         exp.checkOutputs()
     except ParamError as e:
-        sys.stderr.write('%s: bad parameter %s: %s\n' % (ap.script, e.name, e))
-        sys.exit(2)
-    except TableError as e:  # a yade-batch table YADE would misread
-        sys.stderr.write('%s: bad table: %s\n' % (ap.script, e))
-        sys.exit(2)
+        ap.refuse('bad parameter %s: %s' % (e.name, e))
     return exp

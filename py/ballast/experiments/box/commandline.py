@@ -15,6 +15,11 @@ def parser():
     return commandline.addParameters(ap, DECLARATION.params)
 
 
+def readParams(argv):
+    """defaults <- yade-batch table row <- command line, all checked (experiments.commandline.readParams)."""
+    return commandline.readParams(parser(), argv, DECLARATION)
+
+
 def main(argv=None):
     argv = sys.argv[1:] if argv is None else argv
     from yade import utils

@@ -20,8 +20,9 @@ from yade import O, Vector3, plot, utils
 from yade.wrapper import FrictMat, InterpolatingDirectedForceEngine
 
 from ... import runtime
-from ...params import CYCLE_JUMP, requireWritableDir, validate
+from ...params import requireWritableDir, validate
 from .. import chain, grains, preparation, scene
+from ..parameters import CYCLE_JUMP
 from ..base import Experiment
 from ..cyclic import Cyclic
 from . import bed, outputs

@@ -1,27 +1,23 @@
 """Parameters of the box test (docs/box.md), declared once: the library (``BoxTest(**kw)``), the command
 line (``--name value``) and study tables use these names, units, ranges and defaults. The grains, their
-contact law and every crushing, abrasion, strength, fatigue and time-step option are the oedometer's
-declarations (the same ballast, the same engines); the box's own are its geometry, the bed's
-preparation, the sleeper and the load. Needs no YADE."""
+contact law and every crushing, abrasion, strength, fatigue and time-step option are the declarations every
+experiment shares (:mod:`ballast.experiments.parameters`: the same ballast, the same engines); the box's own
+are its geometry, the bed's preparation, the sleeper and the load. Needs no YADE."""
 import hashlib
 import json
 import math
 import os
 
-from ...params import (CYCLE_JUMP, INT32_MAX, NUMBER_NONNEGATIVE, NUMBER_POSITIVE, Param, Parameters, anyText, between,
-                       boolean, checkCycleJump, checkDensityStep, flag, intBetween, nonNegative, positive, positiveInt, text)
-from ..oedometer.parameters import PARAMS as OEDOMETER, checkRolling
-from ..cycleparams import PARAMS as CYCLE_OUTPUTS
+from ...params import NUMBER_NONNEGATIVE, NUMBER_POSITIVE, Param, anyText, between, boolean, flag, intBetween, nonNegative, \
+    positive, positiveInt, text
+from ..parameters import (CONTACT, CYCLE_JUMP, ENGINES, GRAINS, INTEGRATION, PHI, PREPARATION, RUN, SEED, STEEL,
+                          CYCLE_OUTPUTS, ExperimentParameters, take)
 from .loadhistory import LoadHistory, LoadHistoryError
 
 OWNER = 'BoxTest'
-_PHI = 'a number in [0, pi/2)'
-MAX_STEPS = 1e9            # [steps] a run of more is days of CPU (the oedometer's bound)
-MIN_STEPS_PER_CYCLE = 100  # [steps] a cycle resolved by fewer steps is not a load cycle
 
-PARAMS = dict({
-    'seed': Param(1, '-', 'realization: grain sizes and positions, fragment orientations', intBetween(0, INT32_MAX),
-                  'an integer in [0, 2^31 - 1]'),
+PARAMS = {
+    'seed': SEED,
     # the box and the bed (choices: docs/box.md, "Set-up")
     'boxLength': Param(0.7, 'm', 'inner length of the box along the track (x); the sleeper sits in its middle',
                        positive, NUMBER_POSITIVE),
@@ -36,7 +32,7 @@ PARAMS = dict({
     'reuseBed': Param(True, '-', 'load the stored bed of this seed and bed parameters if there is one (the study '
                       'builds each bed once)', boolean, '0 or 1', flag),
     'bedDir': Param('', 'path', 'where beds are stored (default <results>/beds)', anyText, 'a path', text),
-    'steelFriction': OEDOMETER['steelFriction'].withDefault(0.0, 'friction angle of the steel walls and floor of the box'),
+    'steelFriction': STEEL['steelFriction'].withDefault(0.0, 'friction angle of the steel walls and floor of the box'),
     # the sleeper
     'sleeperWidth': Param(0.25, 'm', 'width of the sleeper section along the track (x)', positive, NUMBER_POSITIVE),
     'sleeperHeight': Param(0.2, 'm', 'height of the sleeper section', positive, NUMBER_POSITIVE),
@@ -45,7 +41,7 @@ PARAMS = dict({
     'sleeperMass': Param(35.0, 'kg', 'mass of the sleeper section (a 2.5 m concrete sleeper of about 285 kg, per 0.3 m)',
                          positive, NUMBER_POSITIVE),
     'sleeperFriction': Param(0.5, 'rad', 'friction angle between the sleeper and the grains', between(0, math.pi / 2),
-                             _PHI),
+                             PHI),
     'cribDepth': Param(0.0, 'm', 'crib ballast: grains tipped beside the sleeper up to this height above its underside '
                        '(at most sleeperHeight; 0: none, the sleeper sits on the bed\'s surface)', nonNegative,
                        NUMBER_NONNEGATIVE),
@@ -63,7 +59,7 @@ PARAMS = dict({
     'samples': Param(100, '-', 'rows of samples.csv per cycle (the settlement, the load and the work per cycle are '
                      'read from them)', intBetween(20, 100000), 'an integer in [20, 100000]'),
     # the paper's spheres roll freely: under a sleeper they roll aside and it punches into the bed (docs/box.md)
-    'rollingFriction': OEDOMETER['rollingFriction'].withDefault(0.3, OEDOMETER['rollingFriction'].doc.replace(
+    'rollingFriction': CONTACT['rollingFriction'].withDefault(0.3, CONTACT['rollingFriction'].doc.replace(
         "0: none, the paper's spheres", "0: none, the paper's spheres (which let the sleeper punch in); 0.3 by default "
         "here")),
     'continueFrom': Param('', 'path', 'a state a box test saved (state-end or state-cycle<N>.yade.gz): go on from it '
@@ -72,14 +68,16 @@ PARAMS = dict({
     'resume': Param(False, '-', 'go on with the run killed in <results>/<runId> (run.json "running") from the last state '
                     'it saved (saveEvery), in its folder, to the end it was going to; with no such run, start afresh '
                     '(docs/box.md, "A killed run goes on")', boolean, '0 or 1', flag),
-}, **{k: OEDOMETER[k] for k in (
-    'dMin', 'dMax', 'young', 'poisson', 'friction', 'density', 'steelYoungRatio', 'steelPoisson', 'steelDensity', 'law',
-    'rollingStiffness',
-    'prepYoung', 'prepDamping', 'depFriction', 'damping', 'dtSafety', 'timeStep', 'densityStep',
-    'crush', 'ft0', 'm', 'pattern', 'rMin', 'criterion', 'weibullModulus', 'keep', 'growTime', 'maxPerCheck', 'fatigue',
-    'fatigueExponent', 'fatigueEndurance', 'fatigueHysteresis', 'Tc', 'abrasion', 'strength', 'gamma',
-    'abrasionPeriod', 'lostAsFines', 'results', 'runId', 'progress')}, **CYCLE_JUMP, **CYCLE_OUTPUTS)
-
+    **GRAINS,
+    **take(STEEL, 'steelYoungRatio', 'steelPoisson', 'steelDensity'),
+    **take(CONTACT, 'law', 'rollingStiffness'),
+    **PREPARATION,
+    **INTEGRATION,
+    **ENGINES,
+    **RUN,
+    **CYCLE_JUMP,
+    **CYCLE_OUTPUTS,
+}
 
 # What decides a bed: these parameters and the version of its preparation (bump it whenever bed.build changes:
 # stored beds of older versions are then not reused).
@@ -96,7 +94,7 @@ def bedKey(p):
     return d, 'bed-seed%d-%s.json' % (p['seed'], h)
 
 
-class BoxParameters(Parameters):
+class BoxParameters(ExperimentParameters):
     """The box test's checked parameters (frozen) and what follows from them."""
 
     OWNER, PARAMS = OWNER, PARAMS
@@ -108,20 +106,6 @@ class BoxParameters(Parameters):
             return LoadHistory.fromCsv(self['loadFile'])
         return LoadHistory.sine(self['seatLoad'], self['peakLoad'], self['f'])
 
-    def startTimeStep(self):
-        """The paper's step [s] at the start: dtSafety r sqrt(rho / E) of the smallest grain (eq. 5)."""
-        return self['dtSafety'] * self['dMin'] / 2 * math.sqrt(self['density'] / self['young'])
-
-    def loadingTimeStep(self):
-        return self['densityStep'] or self.startTimeStep()
-
-    def scaledPWaveStep(self):
-        """The own P-wave step [s] density scaling gives every grain (0: off)."""
-        return self['densityStep'] / self['dtSafety']
-
-    def crushPeriod(self):
-        return {'virtPeriod': self['Tc']} if self['Tc'] > 0 else {'iterPeriod': 1}
-
     def sleeperLength(self):
         return self['boxWidth'] - 2 * self['sleeperGap']
 
@@ -132,9 +116,8 @@ class BoxParameters(Parameters):
     def crossCheck(self):
         """Checks between parameters; each error names the parameter at fault."""
         p, bad = self, self.bad
-        if p['dMin'] >= p['dMax']:
-            bad('dMin', 'must be smaller than dMax = %g' % p['dMax'])
-        checkRolling(bad, p)
+        self.checkSizes()
+        self.checkBed()
         if p['bedDepth'] < 2 * p['dMax']:
             bad('bedDepth', 'must hold at least two of the largest grains, 2 dMax = %g m' % (2 * p['dMax']))
         if p['bedDepth'] / p['layers'] < p['dMax']:
@@ -162,23 +145,9 @@ class BoxParameters(Parameters):
                 self.history()
             except LoadHistoryError as e:
                 bad('loadFile', str(e))
-        if p['rMin'] > p['dMax'] / 2:
-            bad('rMin', 'larger than the largest grain radius dMax/2 = %g' % (p['dMax'] / 2))
-        if p['prepYoung'] > p['young']:
-            bad('prepYoung', 'must not exceed young = %g' % p['young'])
-        checkDensityStep(bad, p['densityStep'], self.startTimeStep(), p['timeStep'])
-        T, dt = self.history().period, self.loadingTimeStep()
-        if T / dt < MIN_STEPS_PER_CYCLE:
-            bad('f' if not p['loadFile'] else 'loadFile', 'a cycle of %.3g s spans %.3g time steps of %.3g s, fewer than '
-                '%d' % (T, T / dt, dt, MIN_STEPS_PER_CYCLE))
-        checkCycleJump(bad, p)
-        if p['cycles'] * T / dt > MAX_STEPS and not p['jump']:   # jumping: the cycles simulated are not known
-            bad('cycles', '%d cycles of %.3g s take %.3g time steps of %.3g s, more than %.0e' % (
-                p['cycles'], T, p['cycles'] * T / dt, dt, MAX_STEPS))
-        if p['Tc'] > T:
-            bad('Tc', 'longer than the load cycle (%g s): a cycle could pass without a crushing check' % T)
-        if p['abrasionPeriod'] * dt > T:
-            bad('abrasionPeriod', '%d steps of %.3g s are longer than the load cycle (%g s)' % (p['abrasionPeriod'], dt, T))
+        self.checkDensityStep()
+        self.checkCycleJump()
+        self.checkCycles(self.history().period, 'f' if not p['loadFile'] else 'loadFile', 'cycles')
 
 
 def check(values, text=False):

@@ -1,7 +1,8 @@
 """The oedometer as a study sees it (no YADE)."""
 from ..declaration import Declaration
 from .loadcurve import halfLoadTime
-from .parameters import MAX_LOADING_STEPS, MAX_OVERLAP_RATIO, MIN_STEPS_PER_CYCLE, OWNER, PARAMS, check, packingKey
+from ..parameters import MAX_LOADING_STEPS, MIN_STEPS_PER_CYCLE
+from .parameters import MAX_OVERLAP_RATIO, OWNER, PARAMS, check, packingKey
 
 # the results of summary.json and of the per-check log a study tabulates, (name, unit)
 RESULTS = [('peakForce', 'N'), ('deltaAtPeak', 'm'), ('deltaAtAppliedPeak', 'm'), ('seatingDelta', 'm'), ('deltaMax', 'm'),

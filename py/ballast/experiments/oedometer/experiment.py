@@ -33,8 +33,9 @@ from yade import O
 from ... import grading, runtime
 from ...geometry import sphereVolume
 from ...names import fmtTime
-from ...params import CYCLE_JUMP, validate
+from ...params import validate
 from ...runfiles import runStatus, writeAtomic
+from ..parameters import CYCLE_JUMP
 from .. import chain, grains
 from ..base import Experiment
 from .. import cyclic

@@ -10,7 +10,8 @@ import os
 import numpy as np
 import pandas as pd
 
-from ...params import CRUSH, ParamError, validate
+from ...engineparams import CRUSH
+from ...params import ParamError, validate
 from .closedform import STRESS_PER_F_OVER_D2, criterionStress
 from .strengths import sizeLawFit
 

@@ -20,6 +20,11 @@ def runParser():
     return commandline.addParameters(ap, DECLARATION.params)
 
 
+def readParams(argv):
+    """defaults <- yade-batch table row <- command line, all checked (experiments.commandline.readParams)."""
+    return commandline.readParams(runParser(), argv, DECLARATION)
+
+
 def calibrateParser():
     ap = commandline.OneLineParser('single_particle.py calibrate', {}, prog='scripts/single_particle.py calibrate',
                                    description=calibration.__doc__.split('\n\n')[0])

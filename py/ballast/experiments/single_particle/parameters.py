@@ -1,19 +1,17 @@
 """Parameters of the single-particle crushing test, declared once (the library, the command line and
 study tables use these names). The materials, the contact law and the crushing model are the
-oedometer's declarations (the same grains, the same steel); the test's own are the sample of grains,
-the platens' speed and when a grain counts as not crushed. Needs no YADE."""
-import math
-
-from ...params import (CRUSH, DENSITY_STEP, INT32_MAX, TIME_STEP, Param, Parameters, between, checkDensityStep,
-                       intBetween, numberList, positive)
-from ..oedometer.parameters import PARAMS as OEDOMETER
+declarations every experiment shares (:mod:`ballast.experiments.parameters`: the same grains, the same
+steel); the test's own are the sample of grains, the platens' speed and when a grain counts as not
+crushed. Needs no YADE."""
+from ...params import Param, between, intBetween, numberList, positive
+from ..parameters import (CONTACT, DENSITY_STEP, ENGINES, GRAINS, INTEGRATION, RUN, SEED, STEEL, TIME_STEP,
+                          ExperimentParameters, take)
 from .closedform import crushingForce
 
 OWNER = 'SingleParticle'
 
-PARAMS = dict({
-    'seed': Param(1, '-', 'the sample: grain sizes, Weibull strengths, fragment orientations', intBetween(0, INT32_MAX),
-                  'an integer in [0, 2^31 - 1]'),
+PARAMS = {
+    'seed': SEED.withDefault(1, 'the sample: grain sizes, Weibull strengths, fragment orientations'),
     'n': Param(30, '-', 'grains crushed, each between its own pair of platens', intBetween(1, 10000),
                'an integer in [1, 10000]'),
     'diameters': Param((), 'm', 'the grains\' diameters (then n is their number); empty: n diameters uniform in '
@@ -25,20 +23,23 @@ PARAMS = dict({
                    'summary.json)', positive, 'a number > 0'),
     'maxStrain': Param(0.01, '-', 'a grain not crushed when its platens have closed by this fraction of its diameter '
                        'is reported as not crushed', between(1e-4, 0.5), 'a number in [1e-4, 0.5)'),
-    'Tc': Param(0.0, 's', 'crushing period T_c: the criterion is checked every Tc (0 = every step, the default '
-                'here: the force at the crush is then resolved to one step)', OEDOMETER['Tc'].check,
-                OEDOMETER['Tc'].allowed),
-    'ft0': OEDOMETER['ft0'],
-    'rMin': CRUSH['rMin'].withDefault(0.0, 'grains smaller than rMin never crush (0: every grain of the test can)'),
+    'Tc': ENGINES['Tc'].withDefault(0.0, 'crushing period T_c: the criterion is checked every Tc (0 = every step, the '
+                                    'default here: the force at the crush is then resolved to one step)'),
+    'ft0': ENGINES['ft0'],
+    'rMin': ENGINES['rMin'].withDefault(0.0, 'grains smaller than rMin never crush (0: every grain of the test can)'),
     'timeStep': TIME_STEP,
     'densityStep': DENSITY_STEP.withDefault(0.0, DENSITY_STEP.doc + '; the platens move at a set speed (not scaled); '
                                             'inertiaRatioMax says what the heavier grain costs'),
-}, **{k: OEDOMETER[k] for k in ('dMin', 'dMax', 'young', 'poisson', 'friction', 'density', 'steelYoungRatio',
-                                'steelPoisson', 'steelFriction', 'steelDensity', 'law', 'damping', 'dtSafety', 'm',
-                                'pattern', 'criterion', 'weibullModulus', 'results', 'runId', 'progress')})
+    **GRAINS,
+    **STEEL,
+    **take(CONTACT, 'law'),
+    **take(INTEGRATION, 'damping', 'dtSafety'),
+    **take(ENGINES, 'm', 'pattern', 'criterion', 'weibullModulus'),
+    **RUN,
+}
 
 
-class SingleParticleParameters(Parameters):
+class SingleParticleParameters(ExperimentParameters):
     """The test's checked parameters (frozen) and what follows from them."""
 
     OWNER, PARAMS = OWNER, PARAMS
@@ -46,9 +47,9 @@ class SingleParticleParameters(Parameters):
     def grainCount(self):
         return len(self['diameters']) or self['n']
 
-    def crushPeriod(self):
-        """The crushing engine's YADE period: {'virtPeriod': Tc}, or {'iterPeriod': 1} for Tc = 0."""
-        return {'virtPeriod': self['Tc']} if self['Tc'] > 0 else {'iterPeriod': 1}
+    def smallestDiameter(self):
+        """The smallest of the diameters given, else dMin."""
+        return min(self['diameters']) if self['diameters'] else self['dMin']
 
     def expectedForce(self, d):
         """The closed-form force [N] that crushes a grain of diameter d [m] of characteristic strength
@@ -57,16 +58,13 @@ class SingleParticleParameters(Parameters):
 
     def crossCheck(self):
         p, bad = self, self.bad
-        if p['dMin'] >= p['dMax']:
-            bad('dMin', 'must be smaller than dMax = %g' % p['dMax'])
+        self.checkSizes()
         if p['diameters'] and p['n'] != PARAMS['n'].default and p['n'] != len(p['diameters']):
             bad('n', 'given with %d diameters: give one or the other' % len(p['diameters']))
         # the platens of one grain close by maxStrain d at speed: at least 100 steps (a loading, not a blow)
-        dMin = min(p['diameters']) if p['diameters'] else p['dMin']
-        paper = p['dtSafety'] * dMin / 2 * math.sqrt(p['density'] / p['young'])
-        checkDensityStep(bad, p['densityStep'], paper, p['timeStep'])
-        dt = p['densityStep'] or paper
-        steps = p['maxStrain'] * dMin / p['speed'] / dt
+        self.checkDensityStep()
+        dt = self.loadingTimeStep()
+        steps = p['maxStrain'] * self.smallestDiameter() / p['speed'] / dt
         if steps < 100:
             bad('speed', 'closes the smallest grain by maxStrain in %.3g time steps of %.3g s, fewer than 100: not '
                          'a quasi-static test' % (steps, dt))

@@ -1,0 +1,128 @@
+"""ballast.experiments.parameters: the declarations every experiment shares, each declared once and taken by
+the experiments (with their own defaults or docs where they say so), no experiment's declarations taken from
+another's, and ExperimentParameters: the derived time steps and the checks between parameters, by hand."""
+import math
+import os
+import re
+
+import pytest
+
+from ballast import experiments
+from ballast.experiments.parameters import (CONTACT, CYCLE_JUMP, ENGINES, GRAINS, INTEGRATION, PREPARATION, RUN, SEED,
+                                            STEEL, ExperimentParameters)
+from ballast.params import ParamError
+
+NAMES = ('box', 'oedometer', 'single_particle')
+GROUPS = dict(GRAINS=GRAINS, STEEL=STEEL, CONTACT=CONTACT, PREPARATION=PREPARATION, INTEGRATION=INTEGRATION,
+              ENGINES=ENGINES, RUN=RUN, CYCLE_JUMP=CYCLE_JUMP)
+# what an experiment declares in its own words (another default or doc of the shared declaration)
+OWN = {'oedometer': {'seed'},
+       'box': {'steelFriction', 'rollingFriction'},
+       'single_particle': {'seed', 'Tc', 'rMin', 'densityStep'}}
+# the paper's step at the defaults: dtSafety (dMin / 2) sqrt(density / young) = 0.8 x 0.01025 x 9.3095e-5 s
+PAPER_STEP = 7.6338e-7
+
+
+def params(name):
+    return experiments.declaration(name).params
+
+
+def check(name, **values):
+    return experiments.declaration(name).check(values)
+
+
+def test_the_groups_name_each_parameter_once():
+    names = [n for g in GROUPS.values() for n in g]
+    assert len(names) == len(set(names)) and 'seed' not in names
+
+
+@pytest.mark.parametrize('name', NAMES)
+def test_every_experiment_takes_the_shared_declarations_as_they_are(name):
+    p, shared = params(name), dict(seed=SEED, **{k: v for g in GROUPS.values() for k, v in g.items()})
+    taken = [k for k in p if k in shared]
+    assert {'seed', 'dMin', 'dMax', 'young', 'density', 'law', 'dtSafety', 'results', 'progress'} <= set(taken)
+    for k in taken:
+        if k in OWN[name]:   # its own default or doc, the shared unit, range and reading
+            assert (p[k].unit, p[k].check, p[k].allowed, p[k].parse) == (shared[k].unit, shared[k].check, shared[k].allowed,
+                                                                          shared[k].parse), k
+        else:
+            assert p[k] is shared[k], k
+
+
+def test_the_experiments_own_words_are_theirs():
+    assert params('box')['rollingFriction'].default == 0.3 and CONTACT['rollingFriction'].default == 0.0
+    assert params('single_particle')['Tc'].default == 0.0 and ENGINES['Tc'].default == 1e-4
+    assert params('oedometer')['seed'].doc == SEED.doc + " (YADE's makeCloud takes a C int)"
+
+
+@pytest.mark.parametrize('name', NAMES)
+def test_no_experiment_declares_from_another(name):
+    """Its declarations, declaration and command line import no other experiment's folder."""
+    folder = os.path.dirname(experiments.__file__)
+    others = [n for n in NAMES if n != name]
+    for module in ('parameters.py', 'declaration.py', 'commandline.py'):
+        with open(os.path.join(folder, name, module)) as fh:
+            imports = [line for line in fh if re.match(r'\s*(from|import)\s', line)]
+        assert not [line for line in imports if any(o in line for o in others)], (name, module)
+
+
+@pytest.mark.parametrize('name', NAMES)
+def test_the_time_steps_and_the_crushing_period_by_hand(name):
+    p = check(name)
+    assert isinstance(p, ExperimentParameters)
+    assert p.startTimeStep() == pytest.approx(PAPER_STEP, rel=1e-4)
+    assert p.startTimeStep() == pytest.approx(0.8 * 0.0205 / 2 * math.sqrt(2600 / 3e11), rel=1e-12)
+    assert p.loadingTimeStep() == p.startTimeStep() and p.scaledPWaveStep() == 0.0
+    # the single-particle test's platens slower, to close a grain over 100 steps of 1e-5 s: 0.01 x 0.0205 / 1e-4 = 2.05 ms
+    q = check(name, densityStep=1e-5, Tc=0.0, **({'speed': 1e-4} if name == 'single_particle' else {}))
+    assert q.loadingTimeStep() == 1e-5 and q.scaledPWaveStep() == pytest.approx(1.25e-5, rel=1e-12)   # 1e-5 / 0.8
+    assert q.crushPeriod() == {'iterPeriod': 1} and check(name, Tc=2e-5).crushPeriod() == {'virtPeriod': 2e-5}
+
+
+def test_the_single_particle_step_is_that_of_its_smallest_grain():
+    """Given diameters, the smallest of them: 0.8 x 0.011 x 9.3095e-5 = 8.1924e-7 s."""
+    p = check('single_particle', diameters=[0.03, 0.022])
+    assert p.startTimeStep() == pytest.approx(8.1924e-7, rel=1e-4)
+
+
+def refused(name, values):
+    with pytest.raises(ParamError) as e:
+        check(name, **values)
+    return e.value.name, str(e.value)
+
+
+@pytest.mark.parametrize('name', NAMES)
+def test_the_shared_checks_hold_in_every_experiment(name):
+    assert refused(name, {'dMin': 0.05})[1].endswith('dMin = 0.05 is not allowed: must be smaller than dMax = 0.0445')
+    assert "below the paper's step 7.63e-07 s" in refused(name, {'densityStep': 5e-7})[1]
+    assert 'density scaling sets the step itself' in refused(name, {'densityStep': 1e-5, 'timeStep': 'stiffness'})[1]
+
+
+@pytest.mark.parametrize('name,values,param,words', [
+    ('oedometer', {'rMin': 0.03}, 'rMin', 'larger than the largest grain radius dMax/2 = 0.02225'),
+    ('box', {'rMin': 0.03}, 'rMin', 'larger than the largest grain radius dMax/2 = 0.02225'),
+    ('oedometer', {'prepYoung': 4e11}, 'prepYoung', 'must not exceed young = 3e+11'),
+    ('box', {'prepYoung': 4e11}, 'prepYoung', 'must not exceed young = 3e+11'),
+    ('oedometer', {'law': 'hertz', 'rollingFriction': 0.1}, 'rollingFriction', "needs law = 'linear'"),
+    ('box', {'law': 'hertz'}, 'rollingFriction', "needs law = 'linear'"),   # 0.3 by default in the box
+    # a crushing check in every load cycle: 1/8 Hz = 0.125 s; the box's sine at 3 Hz, 0.333333 s
+    ('oedometer', {'Tc': 0.2}, 'Tc', 'longer than the load cycle, 0.125 s'),
+    ('box', {'Tc': 0.5}, 'Tc', 'longer than the load cycle, 0.333333 s'),
+    # an abrasion check too: 0.125 s / 7.6338e-7 s = 163745 steps at most
+    ('oedometer', {'abrasionPeriod': 163746}, 'abrasionPeriod', '(at most 163745 steps)'),
+    ('oedometer', {'jump': True}, 'jump', 'needs fatigue = 1 and crush = 1'),
+    ('box', {'jump': True, 'fatigue': True, 'crush': False}, 'jump', 'needs fatigue = 1 and crush = 1'),
+    # 10 cycles of 1/3 s at 7.6338e-7 s: 4.37e6 steps; 2500 cycles 1.09e9, more than 1e9
+    ('box', {'cycles': 2500}, 'cycles', 'take 1.09e+09 time steps'),
+    ('oedometer', {'cycles': 6200}, 'f', 'take 1.02e+09 time steps'),
+])
+def test_the_bed_and_cycle_checks_of_the_cyclic_experiments(name, values, param, words):
+    got, message = refused(name, values)
+    assert got == param and words in message, message
+
+
+def test_what_the_single_particle_test_does_not_check():
+    """It has no bed and no cycles: rMin above dMax/2 (no grain crushes) and a long Tc are its to choose."""
+    assert check('single_particle', rMin=0.03, Tc=10.0)['rMin'] == 0.03
+    assert check('oedometer', abrasionPeriod=163745)['abrasionPeriod'] == 163745
+    assert check('box', cycles=2200)['cycles'] == 2200   # 9.6e8 steps
