@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-"""Aggregate a study run by scripts/study.py into tables, tests and the paper's figures (ballast.analysis.report).
+"""Aggregate a study of any experiment run by scripts/study.py into tables, tests and figures, as its declaration says
+(ballast.analysis.report).
 
     scripts/aggregate.py results/studies/frequency            -> results/studies/frequency/aggregate/
     scripts/aggregate.py results/studies/Tc --param Tc --out docs/figures/Tc
@@ -17,7 +18,7 @@ def main(argv=None):
     ap.add_argument('study', metavar='STUDY', help='study directory written by scripts/study.py run (its --out)')
     ap.add_argument('--param', help='the studied column (default: the only one that varies besides seed)')
     ap.add_argument('--out', metavar='DIR', help='where to write (default STUDY/aggregate)')
-    ap.add_argument('--xlog', choices=('auto', 'yes', 'no'), default='auto', help='log axis for the parameter in delta_peak.png')
+    ap.add_argument('--xlog', choices=('auto', 'yes', 'no'), default='auto', help='log axis for the parameter in response.png')
     ap.add_argument('--no-plots', action='store_true', help='only the CSV tables')
     a = ap.parse_args(argv)
     try:

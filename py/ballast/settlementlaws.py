@@ -1,7 +1,8 @@
 """The laws permanent settlement follows against the number of load cycles N in box tests, fitted by least
 squares: logarithmic s = a + b ln N and power s = c N^d (both pass through N = 1 with a's and c's share). Used
 by the analyses of cyclic studies (ballast.analysis.settlement) and by cycle jumping, which extrapolates the
-settlement of the cycles it does not simulate (docs/cycles.md: settlementLaw, settlementJumped). NumPy, no YADE."""
+settlement of the cycles it does not simulate (docs/cycles.md: settlementLaw, settlementJumped), and the rule of which cycles changed the bed (bedChanged). NumPy,
+no YADE."""
 import math
 
 import numpy as np
@@ -25,6 +26,18 @@ def fitLaws(N, s):
 def r2(y, fitted):
     ss = float(np.sum((y - np.mean(y)) ** 2))
     return 1.0 - float(np.sum((y - fitted) ** 2)) / ss if ss > 0 else 1.0
+
+
+def bedChanged(crushes, abrasions=0, totals=False):
+    """Per cycle whether it changed the bed: a grain crushed or abraded in it (the rule cycle jumping and the analyses
+    share: such a cycle is simulated, never jumped, and its settling step is no part of the law, withoutSteps).
+    crushes, abrasions: the counts in each cycle, or with totals=True the running totals at each cycle's end (a cycle
+    changed the bed when they grew since the one before; the first from 0; sequences only). Scalars or sequences; a
+    bool array."""
+    n = np.asarray(crushes) + np.asarray(abrasions)
+    if totals:
+        n = np.diff(n, prepend=0)
+    return n > 0
 
 
 def recentHalf(n):

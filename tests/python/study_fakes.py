@@ -90,28 +90,73 @@ def runId(seed, tc, **more):
 
 
 def fabricateStudy(d, runs=RUNS, missing=MISSING, more=None, params=True, code=('a' * 40,)):
-    """A study directory as Study.run leaves it, without a simulation: study.json and per finished run
-    summary.json (deltaAtPeak, deltaMax = 2 deltaAtPeak, peakForce, nCrushed, nAbraded, the parameters
-    unless params=False) and row.json (the code sha1s of `code` in turn). `more` adds columns (name ->
-    value of the i-th run). Returns the directory."""
-    os.makedirs(str(d), exist_ok=True)
+    """An oedometer study directory as Study.run leaves it, without a simulation (fabricate): per finished run a
+    summary.json (deltaAtPeak, deltaMax = 2 deltaAtPeak, peakForce, nCrushed, nAbraded, the parameters unless
+    params=False), the code sha1s of `code` in turn. `more` adds columns (name -> value of the i-th run). Returns
+    the directory."""
     rows = []
     for i, (seed, tc) in enumerate([r[:2] for r in runs] + missing):
-        extra = {k: str(v(i)) for k, v in (more or {}).items()}
-        rows.append({'line': i + 2, 'runId': runId(seed, tc, **extra), 'row': dict({'seed': str(seed), 'Tc': str(tc)}, **extra)})
+        extra = sorted((k, str(v(i))) for k, v in (more or {}).items())
+        rows.append([dict([('seed', str(seed)), ('Tc', str(tc))] + extra), None])
     for i, (seed, tc, delta, crushed) in enumerate(runs):
-        run = os.path.join(str(d), 'runs', rows[i]['runId'])
-        os.makedirs(run)
         s = {'deltaAtPeak': delta, 'deltaMax': 2 * delta, 'peakForce': 1.5e6, 'nCrushed': crushed, 'nAbraded': 0}
         if params:
             s['params'] = dict({'seed': seed, 'Tc': float(tc)}, **{k: float(v(i)) for k, v in (more or {}).items()})
+        rows[i][1] = s
+    return fabricate(d, rows, ['seed', 'Tc'] + list(more or {}), code=code, table='Tc.table')
+
+
+def fabricate(d, rows, columns, experiment=None, code=('a' * 40,), table='study.table'):
+    """A study directory as Study.run leaves it, without a simulation: study.json (the experiment's name unless
+    None: a folder older than the name, read as the oedometer's; the table's `columns`) and per row of `rows`
+    ([(cells, summary)] in table order, cells {column: text}, a run id 'name=value,...' of them; summary None: a
+    row not finished) runs/<run id>/summary.json and row.json (the code sha1s of `code` in turn). Returns d."""
+    os.makedirs(str(d), exist_ok=True)
+    info = []
+    for i, (cells, summary) in enumerate(rows):
+        rid = ','.join('%s=%s' % kv for kv in cells.items())
+        info.append({'line': i + 2, 'runId': rid, 'row': dict(cells)})
+        if summary is None:
+            continue
+        run = os.path.join(str(d), 'runs', rid)
+        os.makedirs(run)
         with open(os.path.join(run, 'summary.json'), 'w') as fh:
-            json.dump(s, fh)
+            json.dump(summary, fh)
         with open(os.path.join(run, 'row.json'), 'w') as fh:
             json.dump({'codeSha1': code[i % len(code)]}, fh)
+    study = dict({'experiment': experiment} if experiment else {}, table=table, columns=list(columns), rows=info)
     with open(os.path.join(str(d), 'study.json'), 'w') as fh:
-        json.dump({'table': 'Tc.table', 'columns': ['seed', 'Tc'] + list(more or {}), 'rows': rows}, fh)
+        json.dump(study, fh)
     return str(d)
+
+
+# (seed, ft0 [Pa m], settlement [m], resilient [m], crushed, abraded) of fabricateBox: two realizations of one bed
+BOX_RUNS = [(1, 3.5e4, 0.0021, 0.0003, 7, 2), (2, 3.5e4, 0.0035, 0.0005, 11, 0)]
+
+
+def fabricateBox(d, runs=BOX_RUNS):
+    """A box-test study directory (fabricate) whose runs' summaries hold the box's results: settlement, resilient,
+    nCrushed, nAbraded of `runs`, and maxStressRatio 1.5, maxDamage 0, cpuSecondsPerCycle 2 s, cpuSeconds 2 s a
+    cycle over 10 cycles; columns seed and ft0."""
+    rows = [({'seed': str(seed), 'ft0': '%g' % ft0},
+             {'experiment': 'box', 'cycles': 10, 'settlement': s, 'resilient': r, 'nCrushed': c, 'nAbraded': a,
+              'maxStressRatio': 1.5, 'maxDamage': 0.0, 'cpuSecondsPerCycle': 2.0, 'cpuSeconds': 20.0,
+              'params': {'seed': seed, 'ft0': ft0}}) for seed, ft0, s, r, c, a in runs]
+    return fabricate(d, rows, ['seed', 'ft0'], 'box')
+
+
+# (seed, grains, crushed, smallest and largest F/d^2 at a crush [Pa]) of fabricateSingleParticle
+SINGLE_PARTICLE_RUNS = [(1, 4, 4, 1.1e8, 1.3e8), (2, 4, 3, 0.9e8, 1.6e8)]
+
+
+def fabricateSingleParticle(d, runs=SINGLE_PARTICLE_RUNS):
+    """A single-particle study directory (fabricate) whose summaries hold its results (n, nCrushed,
+    forceOverD2Min, forceOverD2Max, inertiaRatioMax 0.001, cpuSeconds 0.5 s a grain); columns seed and n."""
+    rows = [({'seed': str(seed), 'n': str(n)},
+             {'n': n, 'nCrushed': c, 'nNotCrushed': n - c, 'forceOverD2Min': lo, 'forceOverD2Max': hi,
+              'inertiaRatioMax': 0.001, 'cpuSeconds': 0.5 * n, 'params': {'seed': seed, 'n': n}})
+            for seed, n, c, lo, hi in runs]
+    return fabricate(d, rows, ['seed', 'n'], 'single_particle')
 
 
 def writeFakeYade(directory):

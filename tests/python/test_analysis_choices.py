@@ -91,7 +91,7 @@ def test_the_script_writes_the_comparison_and_its_figure(tmp_path):
             (run / 'fd.csv').write_text('t,F,delta,nCrushed,nAbraded,Fapplied\n0,0,0,0,0,0\n0.06,1e6,%r,0,0,1.5e6\n' % delta)
             rows.append({'runId': rid, 'line': len(rows) + 2, 'row': {}})
     (tmp_path / 'study' / 'study.json').write_text(json.dumps({'rows': rows, 'columns': []}))
-    script = os.path.join(root, 'scripts', 'choices.py')
+    script = os.path.join(root, 'studies', 'choices.py')
     p = subprocess.run([sys.executable, script, 'compare', str(tmp_path / 'study')], capture_output=True, text=True)
     assert p.returncode == 0, p.stderr
     with open(tmp_path / 'study' / 'comparison.csv', newline='') as fh:

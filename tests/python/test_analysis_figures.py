@@ -1,6 +1,6 @@
 """Tests of ballast.analysis.figures on fabricated studies (study_fakes.fabricateStudy; no yade): the
-axis of Fig. 5, a value's label with its declared unit, and the three figures drawn from the runs'
-files."""
+axis of Fig. 5, a value's label with its declared unit, and the three figures drawn where the runs'
+files have what they show."""
 import math
 import os
 
@@ -39,10 +39,9 @@ def test_the_figures_are_drawn_from_the_runs_files(tmp_path):
     out = tmp_path / 'out'
     out.mkdir()
     paths = plots(StudyData(d), str(out))
-    assert [os.path.basename(p) for p in paths] == ['fd_curves.png', 'delta_peak.png', 'checks.png']
+    assert [os.path.basename(p) for p in paths] == ['fd_curves.png', 'response.png', 'checks.png']
     assert all(os.path.getsize(p) > 10000 for p in paths)
-    # without a per-check log there is no checks.png
+    # without an F-delta curve and a per-check log there is neither fd_curves.png nor checks.png
     bare = tmp_path / 'bare'
     bare.mkdir()
-    assert [os.path.basename(p) for p in plots(StudyData(fabricateStudy(tmp_path / 'b')), str(bare))] == \
-        ['fd_curves.png', 'delta_peak.png']
+    assert [os.path.basename(p) for p in plots(StudyData(fabricateStudy(tmp_path / 'b')), str(bare))] == ['response.png']

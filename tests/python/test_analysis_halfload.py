@@ -1,4 +1,4 @@
-"""ballast.analysis.halfload and scripts/halfload.py: the sweep read from a fabricated study folder
+"""ballast.analysis.halfload and studies/halfload.py: the sweep read from a fabricated study folder
 (hand-made summaries and per-check logs, values worked out by hand) and from a fabricated CSV of the
 sweep before it was a study, the summary and the report of both, studies/halfload.table, and one
 tiny real run of the sweep through scripts/study.py (5-9 grains, f = 100 Hz: a quarter period is
@@ -182,7 +182,7 @@ def test_summary_by_hand(tmp_path, source):
 
 
 def report(source, out):
-    return subprocess.run([sys.executable, os.path.join(ROOT, 'scripts', 'halfload.py'), 'report', source, '--out', out],
+    return subprocess.run([sys.executable, os.path.join(ROOT, 'studies', 'halfload.py'), 'report', source, '--out', out],
                           capture_output=True, text=True, env=ENV, timeout=120)
 
 

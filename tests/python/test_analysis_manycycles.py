@@ -42,7 +42,7 @@ def test_table_by_hand(tmp_path):
 def test_script_keeps_compact_records_and_draws(tmp_path):
     a = fakeRun(str(tmp_path / 'runs' / 'a'), 2, False, [2e-4, 2.5e-4], 80.0)
     out = tmp_path / 'docs'
-    p = subprocess.run([sys.executable, os.path.join(ROOT, 'scripts', 'cycles_figure.py'), a, '--out', str(out)],
+    p = subprocess.run([sys.executable, os.path.join(ROOT, 'studies', 'cycles_figure.py'), a, '--out', str(out)],
                        capture_output=True, text=True, env=dict(os.environ))
     assert p.returncode == 0, p.stderr
     with open(out / 'a' / 'summary.json') as fh:
@@ -53,6 +53,6 @@ def test_script_keeps_compact_records_and_draws(tmp_path):
     assert os.path.getsize(out / 'cycles.png') > 10000
     assert sorted(os.listdir(out / 'a')) == ['cycles.csv', 'psd.csv', 'record.json', 'summary.json']
     # a folder without cycles.csv is refused before anything is written
-    p = subprocess.run([sys.executable, os.path.join(ROOT, 'scripts', 'cycles_figure.py'), str(tmp_path), '--out',
+    p = subprocess.run([sys.executable, os.path.join(ROOT, 'studies', 'cycles_figure.py'), str(tmp_path), '--out',
                         str(tmp_path / 'other')], capture_output=True, text=True)
     assert p.returncode == 2 and 'has no cycles.csv' in p.stderr and not (tmp_path / 'other').exists()

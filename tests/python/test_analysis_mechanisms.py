@@ -1,4 +1,4 @@
-"""Tests of ballast.analysis.mechanisms and scripts/tc_mechanisms.py on fabricated studies (study.json and
+"""Tests of ballast.analysis.mechanisms and studies/tc_mechanisms.py on fabricated studies (study.json and
 summary.json written here, no yade): variants named from the parameters, means and trends by hand."""
 import csv
 import json
@@ -73,12 +73,12 @@ def test_means_and_trends_by_hand(tmp_path):
     assert np.isnan(st[(BASELINE, 0.0)]['afterPeak_mean'])  # no crushes recorded
     # the script writes the tables and the figure
     out = tmp_path / 'out'
-    p = subprocess.run([sys.executable, os.path.join(ROOT, 'scripts', 'tc_mechanisms.py'), str(tmp_path / 'base'), str(tmp_path / 'var'),
+    p = subprocess.run([sys.executable, os.path.join(ROOT, 'studies', 'tc_mechanisms.py'), str(tmp_path / 'base'), str(tmp_path / 'var'),
                         '--out', str(out)], capture_output=True, text=True)
     assert p.returncode == 0, p.stderr
     with open(out / 'trends.csv', newline='') as fh:
         assert [r['variant'] for r in csv.DictReader(fh)] == [BASELINE, 'sequential']
     assert os.path.getsize(out / 'mechanisms.png') > 20000
-    p = subprocess.run([sys.executable, os.path.join(ROOT, 'scripts', 'tc_mechanisms.py'), str(tmp_path), '--out', str(out)],
+    p = subprocess.run([sys.executable, os.path.join(ROOT, 'studies', 'tc_mechanisms.py'), str(tmp_path), '--out', str(out)],
                        capture_output=True, text=True)
     assert p.returncode == 2 and 'no study.json' in p.stderr

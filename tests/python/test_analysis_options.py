@@ -41,6 +41,9 @@ def test_identical_runs_and_too_few_pairs():
     assert c['meanDifference'] == 0 and c['pWilcoxon'] == 1.0 and c['cpuRatioMedian'] == 1.0
     with pytest.raises(ValueError, match='1 seed.s. in both studies'):
         options.compare(runs([1], [0.1], [1], [1]), a)
+    # two reference runs of seed 2: which is its pair is ambiguous (before: both taken, misaligned)
+    with pytest.raises(ValueError, match='the reference holds 2 runs of seed 2'):
+        options.compare(a, runs([1, 2, 2], [0.01, 0.02, 0.03], [1, 2, 3], [1, 1, 1]))
 
 
 def test_runs_older_than_an_option_hold_the_papers_value():

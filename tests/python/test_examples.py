@@ -1,5 +1,5 @@
-"""The examples/ a YADE user starts from, each run as a user runs it: the two scenes in yade (grains in a
-box under a plate, the engines in a triaxial cell), and a small oedometer run read with pandas and
+"""The examples/ a YADE user starts from, each run as a user runs it: the three scenes in yade (one grain
+crushed between two walls, grains in a box under a plate, the engines in a triaxial cell), and a small oedometer run read with pandas and
 coloured by state for ParaView (ParaView's Python replaced by a stand-in that reads the files with
 Debian's VTK, python3-vtk9, and records the calls)."""
 import importlib.util
@@ -32,7 +32,7 @@ def example(name):
 
 
 def test_every_example_is_tested_and_documented():
-    tested = {'box_under_plate', 'triaxial_cell', 'read_run_with_pandas', 'paraview_colour_by_state'}
+    tested = {'single_grain', 'box_under_plate', 'triaxial_cell', 'read_run_with_pandas', 'paraview_colour_by_state'}
     found = {f[:-3] for f in os.listdir(EXAMPLES) if f.endswith('.py')}
     assert found == tested
     for name in found:
@@ -40,6 +40,15 @@ def test_every_example_is_tested_and_documented():
         assert text.startswith('"""') and 'examples/%s.py' % name in text   # says how to run it
     readme = open(os.path.join(EXAMPLES, 'README.md')).read()
     assert all(name + '.py' in readme for name in found)
+
+
+def test_one_grain_crushes_between_two_walls_at_its_strength(tmp_path):
+    out = yade([os.path.join(EXAMPLES, 'single_grain.py')], tmp_path)
+    # r = 0.02 m, ft0 = 2e5 Pa m: f_t = ft0 / r = 1e7 Pa; checked every step, it crushes as sigma_e passes f_t
+    assert 'strength f_t = ft0/r = 1e+07 Pa' in out, out[-1000:]
+    m = re.search(r'sigma_e = ([\d.]+) Pa > f_t = ([\d.]+) Pa', out)
+    assert m and float(m[2]) == 1e7 and 1 < float(m[1]) / 1e7 < 1.01, out[-1000:]
+    assert re.search(r'^6 fragments \[', out, re.M), out[-1000:]
 
 
 def test_grains_in_a_box_under_a_plate_crush_and_abrade(tmp_path):

@@ -61,3 +61,14 @@ def test_the_steps_of_cycles_that_crushed_are_not_extrapolated():
     np.testing.assert_array_equal(settlementlaws.withoutSteps(s, n == 1), s)
     with pytest.raises(ValueError, match='3 flags for 200 settlements'):
         settlementlaws.withoutSteps(s, [True, False, False])
+
+
+def test_a_cycle_changed_the_bed_when_a_grain_crushed_or_abraded_in_it():
+    # counts per cycle: cycles 2 (a crush), 3 (an abrasion) and 5 (both) changed it
+    np.testing.assert_array_equal(settlementlaws.bedChanged([0, 1, 0, 0, 2], [0, 0, 3, 0, 1]),
+                                  [False, True, True, False, True])
+    # the same cycles as running totals: crushes 0 1 1 1 3, abrasions 0 0 3 3 4
+    np.testing.assert_array_equal(settlementlaws.bedChanged([0, 1, 1, 1, 3], [0, 0, 3, 3, 4], totals=True),
+                                  [False, True, True, False, True])
+    assert list(settlementlaws.bedChanged([2], [0], totals=True)) == [True]  # the first cycle from 0
+    assert settlementlaws.bedChanged(0, 1) and settlementlaws.bedChanged(1) and not settlementlaws.bedChanged(0, 0)

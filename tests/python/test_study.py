@@ -250,7 +250,7 @@ def test_aggregate_mean_and_std_by_hand(study, tmp_path):
     out = tmp_path / 'agg'
     p = run([AGGREGATE, str(study['local']), '--out', str(out), '--param', 'f'], timeout=60)  # f=200 in every row
     assert p.returncode == 0, p.stdout_text
-    assert all((out / f).stat().st_size > 1000 for f in ('fd_curves.png', 'delta_peak.png', 'checks.png'))
+    assert all((out / f).stat().st_size > 1000 for f in ('fd_curves.png', 'response.png', 'checks.png'))
     d = [summary(study['local'], r)['deltaAtPeak'] for r in GOOD]
     m = (d[0] + d[1]) / 2
     s = math.sqrt(((d[0] - m)**2 + (d[1] - m)**2) / (2 - 1))  # sample standard deviation

@@ -9,7 +9,7 @@ import time
 
 import pytest
 
-from ballast.study import runner
+from ballast.study import process, runner
 from ballast.study.executors import DaskExecutor, LocalExecutor, makeExecutor
 from ballast.study.options import StudyError
 from study_fakes import ctrlC, freePort  # noqa: F401 (ctrlC is a fixture)
@@ -61,7 +61,7 @@ def test_dask_executor_does_the_same_through_a_scheduler():
 
 def stoppingRow(spec, leader):
     """A presses Ctrl-C and runs until the stop reaches it; B, queued behind it, must not start."""
-    stopped = runner.stopRequested(spec)
+    stopped = process.stopRequested(spec)
     if stopped():
         return None
     with LOCK:
@@ -88,13 +88,13 @@ def test_a_stopped_study_hands_on_the_runs_it_stopped(kind, monkeypatch, ctrlC):
                 LocalExecutor(1, runRow=stoppingRow).run(twoRuns, lambda t, res: done.append(res), lambda t, quiet=False: None)
         else:
             distributed = pytest.importorskip('distributed')
-            monkeypatch.setattr(runner, 'ASK_DASK', 0.05)  # the workers are threads of this process
+            monkeypatch.setattr(process, 'ASK_DASK', 0.05)  # the workers are threads of this process
             with distributed.LocalCluster(n_workers=1, threads_per_worker=1, processes=False, dashboard_address=None) as cluster:
                 with pytest.raises(KeyboardInterrupt):
                     DaskExecutor(cluster.scheduler_address, 10, runRow=stoppingRow).run(
                         twoRuns, lambda t, res: done.append(res), lambda t, quiet=False: None)
     finally:
-        runner.STOP.clear()
+        process.STOP.clear()
     assert [(r['runId'], r['status']) for r in done] == [('A', 'stopped')]
     assert EVENTS == [('start', 'A', None)]
 

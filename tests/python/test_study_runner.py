@@ -16,7 +16,7 @@ import time
 import pytest
 
 from ballast.experiments import declaration
-from ballast.study import runner
+from ballast.study import attempts, process, runner
 from ballast.runfiles import codeSha1, readSummary, writeAtomic
 from study_fakes import writeFakeYade
 
@@ -81,9 +81,9 @@ def test_a_failed_run_keeps_what_it_left_until_it_succeeds(spec):
     assert os.path.exists(os.path.join(failed, 'partial.txt'))
     assert not os.path.exists(os.path.join(spec['out'], 'runs', spec['runId']))
     log = os.path.join(spec['out'], 'logs', spec['runId'] + '.log')
-    assert runner.failedLog(log) and 'status  : 3 (FAILED)' in open(log).read()
+    assert attempts.failedLog(log) and 'status  : 3 (FAILED)' in open(log).read()
     assert runner.runRow(spec)['status'] == 'ok'
-    assert not os.path.exists(failed) and not runner.failedLog(log)
+    assert not os.path.exists(failed) and not attempts.failedLog(log)
 
 
 def test_exit_zero_without_a_summary_is_a_failure(spec):
@@ -138,7 +138,7 @@ def test_a_run_past_its_timeout_or_stopped_is_killed_with_its_children(spec, why
     os.makedirs(spec['packings'])
     pidFile = os.path.join(os.path.dirname(spec['out']), 'fake-pids.json')
     if why == 'stopped':
-        threading.Thread(target=lambda: waitUntil(lambda: os.path.exists(pidFile), 60) and runner.STOP.set(),
+        threading.Thread(target=lambda: waitUntil(lambda: os.path.exists(pidFile), 60) and process.STOP.set(),
                          daemon=True).start()
     try:
         res = runner.runRow(dict(spec, env={'FAKE': 'hang', 'FAKE_PIDS': pidFile},
@@ -146,7 +146,7 @@ def test_a_run_past_its_timeout_or_stopped_is_killed_with_its_children(spec, why
         if why == 'stopped':
             assert runner.runRow(spec) is None  # the study stopped before this run's turn: it does not start
     finally:
-        runner.STOP.clear()
+        process.STOP.clear()
     assert res['status'] == why and res['rc'] < 0, res  # killed by a signal
     assert ('--timeout of %g s' % TIMEOUT if why == 'timeout' else 'interrupted') in res['error']
     log = open(os.path.join(spec['out'], 'logs', spec['runId'] + '.log')).read()
@@ -204,7 +204,7 @@ def test_a_runner_killed_by_sigkill_leaves_no_simulation_running(spec, killed):
         if killed == 'runner':
             assert waitUntil(lambda: processGone(pids['helper']), 5), "yade's helper outlived the runner"
             work = os.path.join(spec['out'], 'work')
-            [rec] = runner.clearWork(work)
+            [rec] = attempts.clearWork(work)
             assert rec['runId'] == spec['runId'] and rec['status'] == 'started'
             assert rec['error'].endswith('its log ends: fake yade: run seed=1,f=2, mode hang')
             assert os.listdir(work) == []
@@ -219,7 +219,7 @@ def test_a_restart_does_not_run_a_row_another_runner_holds(spec):
     its attempt stays, also when the study starts again and clears what dead attempts left."""
     os.makedirs(spec['packings'])
     work = os.path.join(spec['out'], 'work')
-    code = ('import sys; from ballast.study import runner; lock = runner.rowLock(*sys.argv[1:]); print(bool(lock), flush=True); '
+    code = ('import sys; from ballast.study import attempts; lock = attempts.rowLock(*sys.argv[1:]); print(bool(lock), flush=True); '
             'sys.stdin.read()')
     holder = subprocess.Popen([sys.executable, '-c', code, work, spec['runId']], stdin=subprocess.PIPE, stdout=subprocess.PIPE)
     try:
@@ -231,7 +231,7 @@ def test_a_restart_does_not_run_a_row_another_runner_holds(spec):
         assert res['status'] == 'elsewhere' and res['error'] == 'running elsewhere: another runner holds %s' % os.path.join(
             work, spec['runId'] + '.lock')
         assert sorted(os.listdir(spec['out'])) == ['.study-token', 'work']  # nothing run, no log, no result
-        assert [r['runId'] for r in runner.clearWork(work)] == ['seed=2,f=2']
+        assert [r['runId'] for r in attempts.clearWork(work)] == ['seed=2,f=2']
         assert sorted(os.listdir(work)) == [spec['runId'] + '.held1234', spec['runId'] + '.lock']
     finally:
         holder.stdin.close()
@@ -303,79 +303,20 @@ def test_a_waiting_run_gets_the_packing_its_leader_built(spec):
     assert res['status'] == 'ok' and res['summary']['packingBuiltBy'] == spec['runId'] and res['packings'] == {}
 
 
-def test_last_error_prefers_the_bad_parameter_line(tmp_path):
-    log = tmp_path / 'x.log'
-    log.write_text('start\noedometer.py: bad parameter f: f = -1 is not allowed\nTraceback ...\n  File x\nexit\n')
-    assert runner.lastError(str(log)) == 'oedometer.py: bad parameter f: f = -1 is not allowed'
-    log.write_text('Traceback (most recent call last):\n  File "x"\nValueError: no\n\n')
-    assert runner.lastError(str(log)) == 'ValueError: no'
-    assert runner.lastError(str(tmp_path / 'none.log')) == ''
-
-
-def test_a_running_runs_progress_is_read_from_the_tail_of_its_newest_log(tmp_path):
-    work = tmp_path / 'work'
-    assert runner.runProgress(str(work), 'r') == ''   # no work directory yet
-    old, new, other = (work / 'r.abc', work / 'r.xyz', work / 'r2.abc')
-    for d in (old, new, other):
-        d.mkdir(parents=True)
-    (work / 'r.lock').write_text('')
-    assert runner.runProgress(str(work), 'r') == ''   # started, no log yet
-    line = '[box %6.1fs] load     t=0.1 s  step %d  dt=7.69e-07 s  %5.1f%% of loading  ETA %s  cycle 3 of 10\n'
-    (old / 'run.log').write_text(line % (1, 10, 99.0, '0s'))
-    os.utime(old / 'run.log', (1, 1))   # an earlier attempt's log, older
-    (other / 'run.log').write_text(line % (1, 10, 50.0, '9m'))   # another run whose id starts alike
-    # a long log: 10 000 lines, the last progress line before a line that is none
-    (new / 'run.log').write_text(''.join(line % (k, k, 100 * k / 1e4, '%dm' % (10000 - k)) for k in range(10000)) + 'fabric\n')
-    assert runner.runProgress(str(work), 'r') == '100.0% of loading, ETA 1m'   # line 9 999 (%5.1f)
-    (new / 'run.log').write_text('[box 0.2s] prepare  t=0 s  step 0\n')   # no progress line in its tail
-    assert runner.runProgress(str(work), 'r') == ''
-
-
-def attempt(work, runId, row, state='state-1.gz'):
-    """The work folder a dead runner's attempt left: its row and a run that saved `state` (None: none yet)."""
-    path = os.path.join(work, runId + '.dead1234')
-    runDir = os.path.join(path, 'results', runId)
-    os.makedirs(runDir)
-    writeAtomic(os.path.join(path, 'row.json'), json.dumps(row))
-    writeAtomic(os.path.join(runDir, 'run.json'), json.dumps(dict({'status': 'running'}, **(
-        {'lastState': state} if state else {}))))
-    if state:
-        writeAtomic(os.path.join(runDir, state), 'saved')
-    return path
-
-
-def test_a_killed_run_with_a_saved_state_is_kept_and_goes_on_only_from_its_own_row(tmp_path):
-    work, keep, row = str(tmp_path / 'work'), str(tmp_path / 'resume'), {'seed': '1', 'f': '2'}
-    attempt(work, 'a', row)
-    attempt(work, 'b', row, state=None)   # killed before it saved a state: nothing to go on from
-    records = {r['runId']: r for r in runner.clearWork(work, keep=keep)}
-    assert records['a']['error'].endswith('; kept to go on from its state-1.gz') and records['a']['kept'] == 'state-1.gz'
-    assert 'kept' not in records['b']['error'] and records['b']['kept'] is None
-    assert os.listdir(work) == [] and sorted(os.listdir(keep)) == ['a']
-    assert runner.takeKept(keep, 'a', dict(row, f='3'), str(tmp_path / 'r1')) is None   # the row changed: dropped
-    assert os.listdir(keep) == [] and not os.path.exists(str(tmp_path / 'r1'))
-    attempt(work, 'a', row)
-    runner.clearWork(work, keep=keep)
-    assert runner.takeKept(keep, 'a', row, str(tmp_path / 'r2')) == 'state-1.gz'
-    assert os.path.isfile(str(tmp_path / 'r2' / 'a' / 'state-1.gz')) and os.listdir(keep) == []
-    attempt(work, 'c', row)
-    assert runner.clearWork(work)[0]['runId'] == 'c' and not os.path.exists(os.path.join(keep, 'c'))   # no keep: removed
-
-
 def test_a_stopped_run_of_a_resuming_experiment_is_kept_and_the_next_attempt_resumes(spec):
     """sets with resume (the box test's): the run stopped after it saved a state is kept in resume/; the next run of
     the row is given its folder and --resume 1, and its row.json says where it went on from."""
     os.makedirs(spec['packings'])
     spec = dict(spec, sets=dict(spec['sets'], resume='resume'))
     pidFile = os.path.join(os.path.dirname(spec['out']), 'fake-pids.json')
-    threading.Thread(target=lambda: waitUntil(lambda: os.path.exists(pidFile), 60) and runner.STOP.set(),
+    threading.Thread(target=lambda: waitUntil(lambda: os.path.exists(pidFile), 60) and process.STOP.set(),
                      daemon=True).start()
     try:
         res = runner.runRow(dict(spec, env={'FAKE': 'hang', 'FAKE_PIDS': pidFile}))
     finally:
-        runner.STOP.clear()
+        process.STOP.clear()
     assert res['status'] == 'stopped' and res['error'].endswith('kept to go on from its state-1.gz'), res
-    kept = os.path.join(spec['out'], runner.KEEP, spec['runId'])
+    kept = os.path.join(spec['out'], attempts.KEEP, spec['runId'])
     assert os.path.isfile(os.path.join(kept, 'run', 'state-1.gz'))
     res = runner.runRow(spec)
     assert res['status'] == 'ok' and res['resumedFrom'] == 'state-1.gz', res

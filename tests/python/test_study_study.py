@@ -12,7 +12,7 @@ import threading
 import pytest
 
 from ballast.experiments import Declaration, declaration
-from ballast.study import LocalExecutor, Study, StudyData, runner, status
+from ballast.study import LocalExecutor, Study, StudyData, process, runner, status
 from ballast.runfiles import codeSha1, writeAtomic
 from ballast.study.options import StudyError
 from study_fakes import ctrlC, writeFakeYade  # noqa: F401 (ctrlC is a fixture)
@@ -169,7 +169,7 @@ def test_a_stopped_run_and_one_a_dead_runner_left_are_in_the_journal(setup, tmp_
     try:
         assert study(setup).run(LocalExecutor(1, runRow=pressCtrlC)) == 130
     finally:
-        runner.STOP.clear()
+        process.STOP.clear()
     said = capsys.readouterr().out
     assert 'removed 1 unfinished attempt(s)' in said and 'interrupted: 0 ok, 0 failed' in said
     with open(os.path.join(setup['out'], 'journal.jsonl')) as fh:

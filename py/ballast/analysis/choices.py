@@ -20,6 +20,7 @@ from ..experiments import declaration
 from ..runfiles import column
 from ..study.data import StudyRuns
 from .figures import writeFigure
+from .pairs import keyed
 
 PARAMS = declaration('oedometer').params
 # the paper's criterion and its calibrated ft0 [Pa m] (docs/oedometer.md, "Choice of the defaults")
@@ -44,12 +45,17 @@ def onsetStrengths(study, reference=REFERENCE):
     {'onsetForce': N, 'onsetTime': s, criterion: ft0 [Pa m]}}, 'mean': {criterion: ft0}, 'std': {...}}.
     A seed whose reference never reaches its ft0 is reported with onsetForce None and left out."""
     refName, refFt0 = reference
+    finished = runs(study)
+    for run in finished:
+        if run.summary.get('nCrushed', 0):
+            raise ValueError('%s: %d grains crushed; the onset study loads without crushing (raise ft0)' % (
+                run.dir, run.summary['nCrushed']))
+    # each criterion's run against the reference's of its seed
+    curves = keyed((((r.params['seed'], r.params['criterion']), strengthCurve(r, r.params['ft0'])) for r in finished),
+                   '%s at one criterion' % study)
     bySeed = {}
-    for run in runs(study):
-        s, p = run.summary, run.params
-        if s.get('nCrushed', 0):
-            raise ValueError('%s: %d grains crushed; the onset study loads without crushing (raise ft0)' % (run.dir, s['nCrushed']))
-        bySeed.setdefault(p['seed'], {})[p['criterion']] = strengthCurve(run, p['ft0'])
+    for (seed, criterion), curve in curves.items():
+        bySeed.setdefault(seed, {})[criterion] = curve
     seeds = {}
     for seed, curves in sorted(bySeed.items()):
         if refName not in curves:

@@ -8,6 +8,8 @@ import math
 
 import numpy as np
 
+from .pairs import common, keyed
+
 
 def unitOf(data, quantity):
     """The unit of a result, as the experiment declares it ('-' if it does not)."""
@@ -74,9 +76,10 @@ def blockedTest(data, quantity=None, alpha=0.05, power=0.8):
     values where a run has it and the seeds that have it at all of them: withinSeeds. None with fewer
     than 3 values or 2 complete seeds."""
     quantity = quantity or data.response
-    got = {(r.seed, r.value): r.summary[quantity] for r in data.runs if r.summary.get(quantity) is not None}
+    got = keyed((((r.seed, r.value), r.summary[quantity]) for r in data.runs if r.summary.get(quantity) is not None),
+                '%s at one value' % data.dir)
     values = [v for v in data.values if any(w == v for _, w in got)]
-    seeds = [s for s in data.seeds if all((s, v) in got for v in values)]
+    seeds = common(*[[s for s, w in got if w == v] for v in values])   # a block: a seed at every value
     if len(values) < 3 or len(seeds) < 2:
         return None
     out = withinSeeds(np.array([[got[s, v] for v in values] for s in seeds], dtype=float), data.numeric,

@@ -1,10 +1,12 @@
-"""The paper's figures of a study (docs/studies.md, "Aggregating"; Fig. 4 and Fig. 5 of the paper):
+"""The figures of a study (docs/studies.md, "Aggregating"), each drawn when the runs have what it shows:
 
-    fd_curves.png    F-delta curves, one panel per value of the studied parameter, a line per seed (Fig. 4)
-    delta_peak.png   displacement at peak force against the parameter: one grey line per realization,
-                     mean +- standard deviation as error bars (Fig. 5)
-    checks.png       from the per-check logs: grains crushed, sigma/f_t at a crush, the onset and the
-                     force network at half the peak load, per value (ballast.experiments.oedometer.checkstats)
+    response.png     the response the experiment declares (the oedometer's displacement at peak force, Fig. 5 of
+                     the paper; the box's settlement) against the parameter: one grey line per realization, mean +-
+                     standard deviation as error bars
+    fd_curves.png    runs with an F-delta curve (fd.csv): one panel per value of the studied parameter, a line per
+                     seed (Fig. 4)
+    checks.png       runs with a per-check log: grains crushed, sigma/f_t at a crush, the onset and the force
+                     network at half the peak load, per value (ballast.experiments.oedometer.checkstats)
 
 and the axis of a studied parameter the other analyses draw on. matplotlib (Agg), no YADE.
 """
@@ -15,9 +17,19 @@ import numpy as np
 
 from ..study.aggregate import count, label, stats
 from ..runfiles import column
+from .effects import unitOf
 
 LABELS = {'f': 'loading frequency f [Hz]', 'Tc': 'crushing period $T_c$ [s]', 'rMin': '$r_{min}$ [m]', 'ft0': '$f_{t0}$ [Pa m]',
           'gamma': r'reduction factor $\gamma$ [-]', 'pattern': 'replacement pattern'}
+
+
+# results drawn and printed in a unit of their size: [m] in mm, [N] in kN, [Pa] in MPa
+SHOWN = {'m': ('mm', 1e3), 'N': ('kN', 1e-3), 'Pa': ('MPa', 1e-6)}
+
+
+def shown(unit):
+    """(the unit a result declared in `unit` is drawn and printed in, the factor to it)."""
+    return SHOWN.get(unit, (unit, 1.0))
 
 
 def valueLabel(data, v):
@@ -67,16 +79,30 @@ def appliedForce(fd):
     return column(fd, 'F')
 
 
+def paramLabel(data):
+    """The studied parameter's axis label: LABELS', else its name and declared unit."""
+    params = data.declaration.params
+    return LABELS.get(data.param) or '%s [%s]' % (data.param, params[data.param].unit if data.param in params else '-')
+
+
 def plots(data, outDir, xlog='auto'):
-    """fd_curves.png (Fig. 4), delta_peak.png (Fig. 5) and, when the runs have a per-check log, checks.png
-    of `data` (ballast.study.data.StudyData) in outDir; returns their paths."""
+    """The figures of `data` (ballast.study.data.StudyData) its runs have what for (see the module's doc), in
+    outDir; returns their paths."""
     import matplotlib
     matplotlib.use('Agg')
+    x, ticks, scale = axisPositions(data, xlog)
+    out = [fdCurves(data, outDir), responsePlot(data, outDir, x, ticks, scale), checksPlot(data, outDir, x, ticks, scale)]
+    return [p for p in out if p]
+
+
+def fdCurves(data, outDir):
+    """fd_curves.png (Fig. 4): F-delta of every run with an fd.csv, a panel per value (small multiples), a colour
+    per seed; None if no run has one."""
     import matplotlib.pyplot as plt
     from matplotlib.lines import Line2D
+    if not any(r.fd is not None and 'delta' in r.fd for r in data.runs):
+        return None
     name = os.path.basename(data.dir)
-
-    # Fig. 4: F-delta of every run, a panel per value (small multiples), a colour per seed
     nv = len(data.values)
     ncol = min(nv, 3)
     nrow = -(-nv // ncol)
@@ -108,29 +134,36 @@ def plots(data, outDir, xlog='auto'):
                    loc='upper center', bbox_to_anchor=(0.5, 1 - 0.33 / height), ncol=min(len(data.seeds), 10),
                    fontsize=7, frameon=False)
     fig.tight_layout(rect=(0, 0, 1, 1 - top / height))
-    fd = os.path.join(outDir, 'fd_curves.png')
-    fig.savefig(fd, dpi=110)
+    path = os.path.join(outDir, 'fd_curves.png')
+    fig.savefig(path, dpi=110)
     plt.close(fig)
+    return path
 
-    # Fig. 5: displacement at peak force against the parameter
-    x, ticks, scale = axisPositions(data, xlog)
+
+def responsePlot(data, outDir, x, ticks, scale):
+    """response.png: the declared response against the parameter (the oedometer's: Fig. 5), in the unit the report
+    prints it in; None without a response."""
+    import matplotlib.pyplot as plt
+    r = data.response
+    if r is None:
+        return None
+    unit, k = shown(unitOf(data, r))
     fig, ax = plt.subplots(figsize=(8, 5))
     for s in data.seeds:
-        rs = sorted([r for r in data.runs if r.seed == s], key=lambda r: data.values.index(r.value))
-        ax.plot([x[r.value] for r in rs], [r.summary[data.response] * 1e3 for r in rs], '-o', color='0.7', lw=0.8, ms=2.5,
+        rs = sorted([run for run in data.runs if run.seed == s and run.summary.get(r) is not None],
+                    key=lambda run: data.values.index(run.value))
+        ax.plot([x[run.value] for run in rs], [run.summary[r] * k for run in rs], '-o', color='0.7', lw=0.8, ms=2.5,
                 zorder=1)  # markers: a realization with one value shows too
     st = stats(data)
-    ax.errorbar([x[s['value']] for s in st], [s[data.response + '_mean'] * 1e3 for s in st],
-                yerr=[0 if math.isnan(s[data.response + '_std']) else s[data.response + '_std'] * 1e3 for s in st],
+    ax.errorbar([x[s['value']] for s in st], [s[r + '_mean'] * k for s in st],
+                yerr=[0 if math.isnan(s[r + '_std']) else s[r + '_std'] * k for s in st],
                 fmt='o', color='C0', ecolor='C0', capsize=4, lw=1.5, zorder=3, label='mean $\\pm$ standard deviation')
     ax.plot([], [], '-o', color='0.7', ms=2.5, label='one realization (seed)')
     paramAxis(ax, data.values, x, ticks, scale)
     ax.legend(fontsize=8)
-    dp = save(fig, ax, LABELS.get(data.param, data.param), r'displacement at peak %sforce $\delta$ [mm]' % (
-              'applied ' if data.response == 'deltaAtAppliedPeak' else ''),
-              '%s: %s, %s' % (name, count(len(data.runs), 'run'), count(len(data.seeds), 'realization')), os.path.join(outDir, 'delta_peak.png'))
-    ck = checksPlot(data, outDir, x, ticks, scale)
-    return [fd, dp] + ([ck] if ck else [])
+    return save(fig, ax, paramLabel(data), '%s [%s]' % (r, unit), '%s: %s, %s' % (
+        os.path.basename(data.dir), count(len(data.runs), 'run'), count(len(data.seeds), 'realization')),
+        os.path.join(outDir, 'response.png'))
 
 
 def checksPlot(data, outDir, x, ticks, scale):
@@ -175,7 +208,7 @@ def checksPlot(data, outDir, x, ticks, scale):
                                  r'largest $\sigma/f_t$ at $F = F_{max}/2$, no grain crushed yet')):
         ax.plot([], [], '_', ms=14, mew=2.5, color='C3', label='mean')
         paramAxis(ax, data.values, x, ticks, scale)
-        ax.set_xlabel(LABELS.get(data.param, data.param))
+        ax.set_xlabel(paramLabel(data))
         ax.set_ylabel(ylabel)
         ax.grid(alpha=0.3)
         ax.legend(fontsize=8)

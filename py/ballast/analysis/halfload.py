@@ -21,6 +21,7 @@ from ..runfiles import column
 from ..study.data import StudyRuns, readTable
 from ..experiments.oedometer.checkstats import HALF_LOAD_GAP
 from .figures import writeFigure
+from .pairs import common
 
 STOP_AT = halfLoadTime(1.0)  # [load periods] the oedometer's stopAt of the sweep: eq. 8 passes Fmax/2 at T/4
 COLUMNS = [('seed', '-'), ('f', 'Hz'), ('damping', '-'), ('stressRatioAtHalfLoad', '-'), ('Fapplied', 'N'), ('F', 'N'),
@@ -117,7 +118,7 @@ def summarize(runs):
     for d, s in out.items():
         if d == base or out[base]['f'][0] != s['f'][0] or out[base]['f'][-1] != s['f'][-1]:
             continue
-        diff = np.array([rise[base][k] - rise[d][k] for k in rise[base] if k in rise[d]])
+        diff = np.array([rise[base][k] - rise[d][k] for k in common(rise[base], rise[d])])
         diff = diff[np.isfinite(diff)]
         if diff.size >= 2:
             s['riseAgainstBase'] = {'baseDamping': base, 'seeds': int(diff.size), 'meanDifference': float(diff.mean()),

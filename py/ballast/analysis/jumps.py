@@ -7,6 +7,7 @@ runs (jumping only) give settlement and crushes against log N. Reads the studies
 import numpy as np
 import pandas as pd
 
+from .pairs import bySeed, common
 from .settlement import total
 from ..study.data import StudyRuns
 
@@ -77,11 +78,12 @@ def compare(path, reference=None):
     and whether each agrees within its tolerance. reference: a study whose direct runs are compared with the
     jumping runs of path."""
     runs = _runs(path, reference)
+    key = ['seed', 'cycles']
+    direct = bySeed(runs[~runs.jump], 'compare: the direct runs of %s' % path, key)
+    jumping = bySeed(runs[runs.jump], 'compare: the jumping runs of %s' % path, key)
     out = []
-    for (seed, cycles), g in runs.groupby(['seed', 'cycles']):
-        if set(g.jump) != {False, True}:
-            continue
-        d, j = (g[g.jump == flag].iloc[0].run for flag in (False, True))
+    for seed, cycles in common(direct, jumping):
+        d, j = direct.loc[(seed, cycles), 'run'], jumping.loc[(seed, cycles), 'run']
         row = {'seed': seed, 'cycles': cycles, 'simulatedDirect': len(d.cycles), 'simulatedJump': len(j.cycles),
                'cpuDirect': d.summary['cpuSeconds'], 'cpuJump': j.summary['cpuSeconds'],
                'crushesDirect': int(d.summary['nCrushed']), 'crushesJump': int(j.summary['nCrushed']),

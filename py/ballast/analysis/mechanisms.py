@@ -16,6 +16,7 @@ from ..experiments import declaration
 from ..study.data import StudyData
 from ..experiments.oedometer.checkstats import CHECK_STATS
 from .figures import logPositions, paramAxis, writeFigure
+from .pairs import common
 
 BASELINE = 'batch (the paper)'
 
@@ -94,7 +95,7 @@ def trends(rows):
         tcs = sorted(set(r['Tc'] for r in rows if r['variant'] == v))
         for a, b in zip(tcs, tcs[1:]):
             va, vb, ba, bb = deltas(v, a), deltas(v, b), deltas(BASELINE, a), deltas(BASELINE, b)
-            seeds = sorted(set(va) & set(vb) & set(ba) & set(bb))
+            seeds = common(va, vb, ba, bb)
             mine = np.array([vb[s] - va[s] for s in seeds])
             base = np.array([bb[s] - ba[s] for s in seeds])
             row = {'variant': v, 'Tc0': a, 'Tc1': b, 'n': len(seeds)}

@@ -12,6 +12,7 @@ from scipy import stats
 
 from ..study.data import StudyRuns
 from .effects import meanInterval
+from .pairs import bySeed, common
 
 AVALANCHE = 0.005   # [m] delta at the applied peak above which a realization avalanched (docs/studies.md: quiet
 #                     realizations stay below 1 mm, avalanches settle 9-80 mm)
@@ -50,9 +51,8 @@ def compare(option, reference, response='deltaAtAppliedPeak'):
     the paired differences' mean with its 95 % t interval and Cohen's d_z, Wilcoxon's signed-rank p (paired)
     and Mann-Whitney's p (two-sample), the seeds that changed between quiet and avalanche, and the median
     per-seed ratios option / reference of the CPU seconds and of the loading steps."""
-    a = option.set_index('params.seed')
-    b = reference.set_index('params.seed')
-    seeds = sorted(set(a.index) & set(b.index))
+    a, b = bySeed(option, 'compare: the option', 'params.seed'), bySeed(reference, 'compare: the reference', 'params.seed')
+    seeds = common(a, b)
     if len(seeds) < 2:
         raise ValueError('compare: %d seed(s) in both studies; a comparison needs at least 2' % len(seeds))
     x, y = a.loc[seeds, response].to_numpy(float), b.loc[seeds, response].to_numpy(float)
@@ -107,8 +107,8 @@ def figure(pairs, path):
     from ..runfiles import saveFigure
     fig, axes = plt.subplots(1, len(pairs), figsize=(4.5 * len(pairs), 4.2), squeeze=False)
     for ax, (name, (a, b)) in zip(axes[0], pairs.items()):
-        a, b = a.set_index('params.seed'), b.set_index('params.seed')
-        seeds = sorted(set(a.index) & set(b.index))
+        a, b = bySeed(a, name, 'params.seed'), bySeed(b, name + ': the reference', 'params.seed')
+        seeds = common(a, b)
         x, y = 1e3 * b.loc[seeds, 'deltaAtAppliedPeak'], 1e3 * a.loc[seeds, 'deltaAtAppliedPeak']
         top = max(float(np.max(x)), float(np.max(y)), 1.0) * 1.05
         ax.plot([0, top], [0, top], 'k--', lw=0.8)

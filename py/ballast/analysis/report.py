@@ -1,14 +1,16 @@
-"""A study's tables, tests and figures, as scripts/aggregate.py writes them (docs/studies.md,
-"Aggregating"):
+"""A study's tables, tests and figures, as scripts/aggregate.py writes them for any experiment, driven by its
+declaration (docs/studies.md, "Aggregating"):
 
-    runs.csv, stats.csv   the finished runs and their statistics per value (ballast.study.aggregate)
-    test.json             does the parameter change the response (the displacement at peak)?
-                          Kruskal-Wallis across its values, with the difference of two means the runs
-                          could have detected; under "blocked" the same question asked within each
-                          realization (Friedman, seeds as blocks; Page's trend test), under "onset" for
-                          the applied force at the first crush, under "network" for the largest
-                          sigma/f_t at half the peak load before any crush (ballast.analysis.effects)
-    fd_curves.png, delta_peak.png, checks.png   the figures (ballast.analysis.figures)
+    runs.csv, stats.csv   the finished runs and their statistics per value (ballast.study.aggregate): the
+                          declaration's results and statistics
+    test.json             does the parameter change the response (the declaration's: the oedometer's displacement
+                          at peak, the box's settlement)? Kruskal-Wallis across its values, with the difference of
+                          two means the runs could have detected; under "blocked" the same question asked within
+                          each realization (Friedman, seeds as blocks; Page's trend test), and under each key the
+                          declaration's `tested` names the same within seeds for another result (the oedometer's
+                          "onset" and "network") (ballast.analysis.effects)
+    response.png          the response against the parameter; fd_curves.png, checks.png where the runs have an
+                          F-delta curve, a per-check log (ballast.analysis.figures)
 
 The studied parameter is the column of the table that varies besides the seed (or the one named).
 Runs not finished are left out and listed.
@@ -19,21 +21,36 @@ import os
 from ..study.aggregate import count, label, stats, writeCsv
 from ..study.data import StudyData
 from ..study.options import StudyError
-from .effects import blockedTest, effectTest
-from .figures import plots
+from .effects import blockedTest, effectTest, unitOf
+from .figures import plots, shown
+
+COLUMNS = 4   # the printed table: the response and the first statistics after it, in the declaration's order
+
+
+def amount(data, quantity, value):
+    """'12.3 mm': a value [declared unit] of a result in the unit it is printed in."""
+    unit, k = shown(unitOf(data, quantity))
+    return '%.3g%s' % (value * k, '' if unit == '-' else ' ' + unit)
+
+
+def columns(data):
+    """The results of the printed table: the response, then the declaration's statistics some run has, COLUMNS in
+    all."""
+    first = [data.response] if data.response else []
+    return (first + [k for k in data.declaration.statistics if k not in first and
+                     any(r.summary.get(k) is not None for r in data.runs)])[:COLUMNS]
 
 
 def tests(data):
-    """test.json of `data` (StudyData): effectTest with blocked, onset and network (blockedTest of the
-    response, of the applied force at the first crush and of sigma/f_t at Fmax/2); None where
-    effectTest has no test."""
-    test = effectTest(data)
+    """test.json of `data` (StudyData): effectTest of the response, with blocked (its blockedTest) and the
+    blockedTest of each result the declaration's `tested` names, under its key; None where effectTest has no test
+    (no response, or fewer than two values of two runs each)."""
+    test = effectTest(data) if data.response else None
     if test is None:
         return None
     alpha, power = test['alpha'], test['power']
     return dict(test, blocked=blockedTest(data, alpha=alpha, power=power),
-                onset=blockedTest(data, 'forceAtFirstCrush', alpha, power),
-                network=blockedTest(data, 'stressRatioAtHalfLoad', alpha, power))
+                **{key: blockedTest(data, name, alpha, power) for key, (name, _) in data.declaration.tested.items()})
 
 
 def trend(t):
@@ -41,17 +58,51 @@ def trend(t):
     return '; Page trend: %s, p = %.3g' % (t['trend'], t['pTrend']) if 'trend' in t else ''
 
 
-def aggregate(path, param=None, outDir=None, xlog='auto', figures=True):
+def table(data):
+    """The printed table's lines: per value of the parameter, n and the mean +- sd of columns(data)."""
+    shownCols = [(k, shown(unitOf(data, k))) for k in columns(data)]
+    lines = ['%-12s %3s' % (data.param, 'n') + ''.join('  %24s' % ('%s [%s]' % (k, u))[:24] for k, (u, _) in shownCols)]
+    for st in stats(data):
+        lines.append('%-12s %3d' % (label(st['value']), st['n']) + ''.join(
+            '  %11.4g +- %-9.3g' % (st[k + '_mean'] * f, st[k + '_std'] * f) for k, (_, f) in shownCols))
+    return lines
+
+
+def say(data, test):
+    """The lines the report prints on the tests of test.json."""
+    if test is None:
+        return []
+    r = data.response
+    detectable = 'detectableDifference [%s]' % unitOf(data, r)
+    lines = ['Kruskal-Wallis across %s: H = %.3g, p = %.3g (%d groups, %d runs); a difference of two means of %s would '
+             'have been found with probability %g at the %g level' % (
+                 data.param, test['H'], test['p'], test['groups'], test['runs'],
+                 amount(data, r, test[detectable]),
+                 test['power'], test['alpha'])]
+    blocked = test['blocked']
+    if blocked is not None:
+        lines.append('Friedman across %s within seeds: chi2 = %.3g, p = %.3g (%d seeds complete); detectable difference '
+                     '%s%s' % (data.param, blocked['chi2'], blocked['p'], blocked['seeds'],
+                               amount(data, r, blocked[detectable]), trend(blocked)))
+    for key, (_, words) in data.declaration.tested.items():
+        t = test[key]
+        if t is not None:
+            lines.append('%s, within seeds: Friedman p = %.3g (%d seeds)%s' % (words, t['p'], t['seeds'], trend(t)))
+    return lines
+
+
+def aggregate(path, param=None, outDir=None, xlog='auto', figures=True, experiment=None):
     """Aggregate the study folder `path` into outDir (default <path>/aggregate): the CSV tables, the
-    tests, the figures unless figures=False, and a report on standard output. Returns the StudyData."""
+    tests, the figures unless figures=False, and a report on standard output. experiment: its name or
+    Declaration (default: study.json's). Returns the StudyData."""
     outDir = outDir or os.path.join(path, 'aggregate')
     if os.path.exists(outDir) and not os.path.isdir(outDir):
         raise StudyError('--out: %s exists and is not a directory' % outDir)
-    data = StudyData(path, param)
+    data = StudyData(path, param, experiment)
     os.makedirs(outDir, exist_ok=True)
     runsCsv, statsCsv = writeCsv(data, outDir)
-    print('%s: %s of %d rows; studied parameter %s (%s), %s' % (
-        data.dir, count(len(data.runs), 'finished run'), len(data.info['rows']), data.param,
+    print('%s: %s of %d rows (%s); studied parameter %s (%s), %s' % (
+        data.dir, count(len(data.runs), 'finished run'), len(data.info['rows']), data.declaration.name, data.param,
         count(len(data.values), 'value'), count(len(data.seeds), 'realization')))
     shas = data.codeVersions()
     if len(shas) > 1:
@@ -60,30 +111,13 @@ def aggregate(path, param=None, outDir=None, xlog='auto', figures=True):
     if data.missing:
         print('not finished (left out): %d: %s%s' % (len(data.missing), ', '.join(data.missing[:8]),
                                                      ' ...' if len(data.missing) > 8 else ''))
-    print('%-12s %3s  %22s  %22s  %16s  %20s' % (data.param, 'n', 'delta at peak [mm]', 'delta max [mm]', 'crushed',
-                                                  'F at 1st crush [kN]'))
-    for st in stats(data):
-        print('%-12s %3d  %10.2f +- %8.2f  %10.2f +- %8.2f  %6.1f +- %5.1f  %8.0f +- %7.0f' % (
-            label(st['value']), st['n'], st[data.response + '_mean'] * 1e3, st[data.response + '_std'] * 1e3,
-            st['deltaMax_mean'] * 1e3, st['deltaMax_std'] * 1e3, st['nCrushed_mean'], st['nCrushed_std'],
-            st['forceAtFirstCrush_mean'] / 1e3, st['forceAtFirstCrush_std'] / 1e3))
+    print('\n'.join(table(data)))
     test = tests(data)
     if test is not None:
         with open(os.path.join(outDir, 'test.json'), 'w') as fh:
             json.dump(test, fh, indent=1)
-        print('Kruskal-Wallis across %s: H = %.3g, p = %.3g (%d groups, %d runs); a difference of two means of %.1f mm '
-              'would have been found with probability %g at the %g level' % (
-                  data.param, test['H'], test['p'], test['groups'], test['runs'], test['detectableDifference [m]'] * 1e3,
-                  test['power'], test['alpha']))
-        blocked = test['blocked']
-        if blocked is not None:
-            print('Friedman across %s within seeds: chi2 = %.3g, p = %.3g (%d seeds complete); detectable difference %.1f mm%s' % (
-                data.param, blocked['chi2'], blocked['p'], blocked['seeds'], blocked['detectableDifference [m]'] * 1e3,
-                trend(blocked)))
-        for what, t in (('applied force at the first crush', test['onset']),
-                        ('largest sigma/f_t at Fmax/2 before a crush', test['network'])):
-            if t is not None:
-                print('%s, within seeds: Friedman p = %.3g (%d seeds)%s' % (what, t['p'], t['seeds'], trend(t)))
+    for line in say(data, test):
+        print(line)
     print('tables: %s, %s' % (runsCsv, statsCsv))
     if figures:
         print('figures: %s' % ', '.join(plots(data, outDir, xlog)))

@@ -9,9 +9,10 @@ import os
 import numpy as np
 import pandas as pd
 
-from ..settlementlaws import fitLaws, settlementJumped
+from ..settlementlaws import bedChanged, fitLaws, settlementJumped
 from ..study.data import StudyRuns
 from .effects import meanInterval
+from .pairs import common, oneRunPerSeed
 
 
 def continued(runs):
@@ -122,26 +123,21 @@ def readApart(frame):
     return frame.apart | frame.tippedAt.notna()
 
 
-def changedRows(cycles):
-    """Per row of cycles.csv whether a grain crushed or abraded in that cycle (crushes and abrasions, each a count in
-    that cycle; records of before 2026-12 read through ballast.study.data get these names: LEGACY_COUNTS); None
-    where the file has neither."""
+def changed(cycles):
+    """Per row of cycles.csv whether a grain crushed or abraded in that cycle (settlementlaws.bedChanged of its
+    crushes and abrasions, counts in that cycle; records of before 2026-12 read through ballast.study.data get these
+    names: LEGACY_COUNTS); None where the file has neither."""
     if 'crushes' not in cycles:
         return None
-    return (cycles['crushes'] + (cycles['abrasions'] if 'abrasions' in cycles else 0)).to_numpy() > 0
-
-
-def jumpedSettlement(cycles):
-    """The settlement [m] extrapolated over the cycles jumped before each row of a cycles.csv with cycle jumping
-    (worked out again from the rows, as the code of today does it: settlementlaws.settlementJumped)."""
-    return settlementJumped(cycles['cycle'], cycles['settlement'], changedRows(cycles))
+    return bedChanged(cycles['crushes'], cycles['abrasions'] if 'abrasions' in cycles else 0)
 
 
 def total(cycles):
     """The settlement [m] of each row of cycles.csv; with cycle jumping, the jumped cycles' extrapolation added."""
     if 'jumped' not in cycles:
         return cycles['settlement']
-    return cycles['settlement'] + jumpedSettlement(cycles)
+    # the jumped cycles' share worked out again from the rows, as the code of today extrapolates it
+    return cycles['settlement'] + settlementJumped(cycles['cycle'], cycles['settlement'], changed(cycles))
 
 
 def summary(frame):
@@ -177,15 +173,10 @@ def paired(frame, study, reference, at):
     for name in (study, reference):
         g = frame[frame.study == name]
         g = g[~g.apart | g.groupby('seed').apart.transform('all')]   # apart beside a run of its seed in the mean
-        twice = g.groupby('seed').runId.nunique()
-        if (twice > 1).any():
-            seed = twice[twice > 1].index[0]
-            raise ValueError('paired: %s holds %d runs of seed %s (%s): which to pair is ambiguous' % (
-                name, twice[seed], seed, ', '.join(sorted(g[g.seed == seed].runId.unique()))))
-        runs[name] = g.set_index(['seed', 'cycle'])
+        runs[name] = oneRunPerSeed(g, 'paired: ' + name, run='runId').set_index(['seed', 'cycle'])
     mine, ref = runs[study], runs[reference]
-    both = mine.index.intersection(ref.index)
-    both = both[both.get_level_values('cycle').isin(list(at))]
+    both = pd.MultiIndex.from_tuples([k for k in common(mine.index, ref.index) if k[1] in set(at)],
+                                     names=['seed', 'cycle'])
     rows = pd.DataFrame({'seed': both.get_level_values('seed'), 'cycle': both.get_level_values('cycle'),
                          'runId': mine.loc[both, 'runId'].to_numpy(), 'reference': ref.loc[both, 'runId'].to_numpy(),
                          'settlement': mine.loc[both, 'settlement'].to_numpy(),

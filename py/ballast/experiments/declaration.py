@@ -27,13 +27,15 @@ class Declaration:
                 run of a study has (runs of older versions may lack the later results)
     brief       brief(summary) -> the few words of a finished run's line in a study's progress (default: the
                 first three results with their units)
+    tested      {key: (result, words)}: results besides the response whose within-seed test a study's report
+                (ballast.analysis.report) adds to test.json under key and names by words (default: none)
     recordFiles the files of a run its compact record keeps whole (ballast.study.records); None: the
                 oedometer's (summary, row, psd and cycles whole, fd, checks and crushes thinned)
     """
 
     def __init__(self, name, params, check, script, sets, sampleKey=None, cost=None, recordTimes=None, results=(),
                  statistics=(), derived=None, response=(), owner=None, title=None, bounds=(), brief=None,
-                 recordFiles=None):
+                 recordFiles=None, tested=None):
         self.name, self.params, self.check, self.script, self.sets = name, params, check, script, sets
         self.owner = owner or name
         self.title, self.bounds = title or name, list(bounds)
@@ -44,6 +46,7 @@ class Declaration:
         self.derived = derived or (lambda run: {})
         self.brief = brief or self._brief
         self.recordFiles = None if recordFiles is None else tuple(recordFiles)
+        self.tested = dict(tested or {})
 
     def _brief(self, summary):
         return ', '.join('%s %s%s' % (name, _number(summary.get(name)), '' if unit == '-' else ' ' + unit)

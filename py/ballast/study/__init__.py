@@ -8,18 +8,22 @@ command line; see docs/studies.md. The experiment is known by its declaration
     from ballast.study import Study, LocalExecutor
     Study('studies/ci.table', script='scripts/oedometer.py', out='/tmp/ci').run(LocalExecutor(2))
 
-Modules: :mod:`.table` (reading, checking and writing tables: the one reader of the yade-batch
-tables), :mod:`.runner` (one run: the yade process, its files, shipping to workers without a shared
-file system), :mod:`.executors` (local, Dask), :mod:`.study` (Study: bookkeeping, restart, status),
-:mod:`.records` (the compact records kept in the repository), :mod:`.data` (a run and a study read
-back as DataFrames: read_run, StudyData), :mod:`.aggregate` (runs.csv, stats.csv), :mod:`.options`
-(the runner's options, StudyError), :mod:`.files` (atomic writes, the code's sha1). Needs no running
-YADE: reading a table imports YADE's table reader, the runs are yade processes.
+Modules: :mod:`.table` (writing tables: a grid; the one reader of the yade-batch tables is
+:mod:`ballast.tables`), :mod:`.runner` (one run: its work folder, its files, shipping to workers without
+a shared file system), :mod:`.process` (a run's yade process, its watchdog, stopping it),
+:mod:`.attempts` (the work directory: locks, logs, runs kept to resume), :mod:`.executors` (local,
+Dask), :mod:`.study` (Study: checks, bookkeeping, restart), :mod:`.progress` (what a study says while
+it runs and its status after), :mod:`.records` (the compact records kept in the repository),
+:mod:`.data` (a run and a study read back as DataFrames: read_run, StudyData), :mod:`.aggregate`
+(runs.csv, stats.csv), :mod:`.options` (the runner's options, StudyError); atomic writes and the code's
+sha1 are :mod:`ballast.runfiles`'. Needs no running YADE: reading a table imports YADE's table reader,
+the runs are yade processes.
 """
 from .data import StudyData, StudyRuns, read_run
 from .executors import DaskExecutor, LocalExecutor, makeExecutor
 from .options import StudyError
-from .study import Study, status
+from .progress import status
+from .study import Study
 from ..tables import Table, tableRow
 from .table import gridTable
 

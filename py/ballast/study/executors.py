@@ -10,7 +10,7 @@ import shutil
 import time
 import uuid
 
-from . import runner
+from . import process, runner
 from .options import OPTIONS, StudyError, optionValue
 
 
@@ -27,7 +27,7 @@ class LocalExecutor:
 
     def run(self, tasks, onDone, onStart):
         from concurrent.futures import FIRST_COMPLETED, ThreadPoolExecutor, wait
-        runner.STOP.clear()
+        process.STOP.clear()
         waiting = {}  # leader run id -> the tasks needing its packing
         for t in tasks:
             if t['leader']:
@@ -37,7 +37,7 @@ class LocalExecutor:
 
         def start(t, leaderRes):
             def job():
-                if runner.STOP.is_set():
+                if process.STOP.is_set():
                     return None
                 onStart(t)
                 return self.runRow(t['spec'], leaderRes)
@@ -57,7 +57,7 @@ class LocalExecutor:
                         for d in waiting.pop(t['spec']['runId'], []):
                             start(d, res)
         except KeyboardInterrupt:
-            runner.STOP.set()  # every running run kills its yade, queued ones do not start
+            process.STOP.set()  # every running run kills its yade, queued ones do not start
             for fut, t in running.items():
                 if not fut.cancel():  # started: its result comes once its yade is killed
                     res = fut.result()
@@ -150,17 +150,17 @@ class DaskExecutor:
                 byId.pop(t['spec']['runId'], None)  # lets Dask forget results nobody needs any more
                 fut.release()
         except KeyboardInterrupt:
-            # the running tasks kill their yade within runner.ASK_DASK seconds, the others do not start;
+            # the running tasks kill their yade within process.ASK_DASK seconds, the others do not start;
             # the runs stopped are attempts too: their results go to onDone, for as long as stopping takes
             stop.set()
-            deadline = time.time() + runner.ASK_DASK + runner.KILL_WAIT + 5
+            deadline = time.time() + process.ASK_DASK + process.KILL_WAIT + 5
             while pending and time.time() < deadline:
                 for fut in [f for f in pending if f.done()]:
                     t = pending.pop(fut)
                     res = taskResult(fut, t)
                     if res is not None:  # None: it did not start
                         onDone(t, res)
-                time.sleep(runner.POLL)
+                time.sleep(process.POLL)
             self.client.cancel(list(pending))
             raise
         finally:

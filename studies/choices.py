@@ -1,8 +1,8 @@
 #!/usr/bin/python3
 """What the model options of issue 13 do at the paper's size (ballast.analysis.choices, docs/strength.md).
 
-    scripts/choices.py onset docs/studies/criteria-onset       the ft0 of each criterion at the paper's onset
-    scripts/choices.py compare docs/studies/choices            comparison.csv and choices.png there
+    studies/choices.py onset docs/studies/criteria-onset       the ft0 of each criterion at the paper's onset
+    studies/choices.py compare docs/studies/choices            comparison.csv and choices.png there
 """
 import argparse
 import csv
@@ -14,7 +14,7 @@ from ballast.analysis import choices
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(prog='scripts/choices.py', description=__doc__, allow_abbrev=False,
+    ap = argparse.ArgumentParser(prog='studies/choices.py', description=__doc__, allow_abbrev=False,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument('what', choices=('onset', 'compare'))
     ap.add_argument('study', metavar='STUDY', help='a study directory or its records (scripts/study.py run --records)')

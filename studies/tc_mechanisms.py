@@ -2,7 +2,7 @@
 """Why delta depends on the crushing period: the T_c study beside its controlled variants
 (ballast.analysis.mechanisms; issue 14, docs/studies.md).
 
-    scripts/tc_mechanisms.py docs/studies/Tc-4Hz docs/studies/Tc-variants --out docs/studies/Tc-variants
+    studies/tc_mechanisms.py docs/studies/Tc-4Hz docs/studies/Tc-variants --out docs/studies/Tc-variants
 writes mechanisms.csv (per variant and T_c: n, mean, std, standard error of delta, mean crushes, the share of
 crushes after the peak of the applied force, the largest sigma/f_t of a grain when it crushed),
 trends.csv (per variant, the change of delta from one T_c to the next beside the baseline's on the same seeds,
@@ -27,7 +27,7 @@ def writeCsv(rows, path):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(prog='scripts/tc_mechanisms.py', description=__doc__, allow_abbrev=False,
+    ap = argparse.ArgumentParser(prog='studies/tc_mechanisms.py', description=__doc__, allow_abbrev=False,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument('studies', nargs='+', metavar='STUDY', help='study directories or records (the baseline and the variants)')
     ap.add_argument('--out', metavar='DIR', required=True, help='where to write')

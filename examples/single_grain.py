@@ -1,6 +1,6 @@
 """Demo: one ballast grain squeezed between two walls until it crushes (Dubina & Eliáš, section 2).
 
-    yade -n -x scripts/single_grain.py
+    yade -n -x examples/single_grain.py
 
 The top wall moves down at constant speed; the crushing engine checks every step and the grain
 breaks into six fragments when its von Mises stress (eqs. 2-3) exceeds f_t = ft0 / r (eq. 4).

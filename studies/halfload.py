@@ -6,7 +6,7 @@ The sweep is a study of the oedometer with stopAt = 0.25 (studies/halfload.table
 recorded by scripts/study.py like every study:
 
     scripts/study.py run studies/halfload.table -j 1 --records docs/studies/halfload/records
-    scripts/halfload.py report docs/studies/halfload/records --out docs/studies/halfload
+    studies/halfload.py report docs/studies/halfload/records --out docs/studies/halfload
 
 `report` reads a study folder (a study directory or its records) or the sweep's CSV of before
 (docs/studies/halfload/runs.csv, 120 runs) and writes test.json and halfload.png; from a study
@@ -22,7 +22,7 @@ from ballast.study import StudyError
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(prog='scripts/halfload.py', description=__doc__, allow_abbrev=False,
+    ap = argparse.ArgumentParser(prog='studies/halfload.py', description=__doc__, allow_abbrev=False,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     sub = ap.add_subparsers(dest='command', metavar='COMMAND', required=True)
     rp = sub.add_parser('report', help='the tests and the figure of a sweep')

@@ -1,7 +1,7 @@
 """Settlement and breakage against the number of load cycles for several oedometer runs (docs/oedometer.md,
 "Many cycles"): keeps each run's compact record under --out, writes runs.csv and cycles.png there.
 
-    /usr/bin/python3 scripts/cycles_figure.py RUN_DIR [RUN_DIR ...] --out docs/studies/cycles
+    /usr/bin/python3 studies/cycles_figure.py RUN_DIR [RUN_DIR ...] --out docs/studies/cycles
 """
 import argparse
 import os

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """The fast options against the paper's settings (ballast.analysis.options; docs/performance.md):
 
-    scripts/fast_options.py docs/studies/fast-options --out docs/studies/fast-options
+    studies/fast_options.py docs/studies/fast-options --out docs/studies/fast-options
 
 The study's runs of each option (ballast.analysis.options.OPTIONS) are paired by seed with the runs of
 the paper's settings at the same f and T_c: the same study's, or those of --reference (an older study's
@@ -16,7 +16,7 @@ from ballast.study.options import StudyError
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(prog='scripts/fast_options.py', description=__doc__.split('\n\n')[0])
+    ap = argparse.ArgumentParser(prog='studies/fast_options.py', description=__doc__.split('\n\n')[0])
     ap.add_argument('study', help='the study (or its records) with the options')
     ap.add_argument('--reference', help="the study (or its records) with the paper's settings (default: STUDY's own)")
     ap.add_argument('--f', type=float, default=4.0, help='loading frequency of both [Hz] (default 4)')
