@@ -224,7 +224,7 @@ class Experiment:
                 b = O.bodies[loaded]
                 K = sum(i.phys.kn for i in b.intrs() if i.isReal)
                 own[loaded] = math.sqrt(b.state.mass / (LOADED_STIFFNESS_MARGIN * K)) if b.dynamic and K > 0 else None
-            timestep.startDensityScaling(self, p['densityStep'], p['densityStep'] / p['dtSafety'], own)
+            timestep.startDensityScaling(self, p['densityStep'], p.scaledPWaveStep(), own)
 
     def baseState(self):
         wall, cpu = self.seconds()

@@ -34,7 +34,7 @@ from yade import O
 
 from .. import runtime
 from ..runfiles import writeAtomic
-from ..settlementlaws import settlementJumped
+from ..settlementlaws import bedChanged, settlementJumped
 from . import chain, grains
 from .cyclejump import CycleJumper
 
@@ -50,8 +50,8 @@ JUMPER = 'cycleJumper'   # the label of the callback that makes a planned jump
 
 
 def changed(frame):
-    """Whether a grain crushed or abraded in each cycle: the bed the settlement laws fit changed there."""
-    return (frame.crushes + frame.abrasions > 0).to_numpy()
+    """Whether a grain crushed or abraded in each cycle (settlementlaws.bedChanged: the bed the laws fit changed)."""
+    return bedChanged(frame.crushes.to_numpy(), frame.abrasions.to_numpy())
 
 
 def table(rows, own=(), jumper=None):

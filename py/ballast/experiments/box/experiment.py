@@ -23,6 +23,7 @@ from ... import runtime
 from ...params import requireWritableDir, validate
 from .. import chain, grains, preparation, scene
 from ..parameters import CYCLE_JUMP
+from ...settlementlaws import bedChanged
 from ..base import Experiment
 from ..cyclic import Cyclic
 from . import bed, outputs
@@ -148,7 +149,7 @@ class BoxTest(Cyclic, Experiment):
             if outputs.gradedCycle(k):
                 self.grade(k)
             row = dict(zip(Recorder.CYCLE_COLUMNS, self.recorder.cycles[-1]))
-            self.cycleDone(k, row['settlement'], row['crushes'] + row['abrasions'] > 0)
+            self.cycleDone(k, row['settlement'], bool(bedChanged(row['crushes'], row['abrasions'])))
 
     def jumped(self, cycles):
         self.recorder.jump(cycles)

@@ -41,6 +41,8 @@ DECLARATION = Declaration(
     cost=lambda p: p['cycles'] / p['f'],          # simulated loading time [s]: the highest f builds the packing
     recordTimes=lambda p: [halfLoadTime(p['f'])],  # the two checks around Fmax/2 (stressRatioAtHalfLoad)
     results=RESULTS, statistics=STATISTICS, derived=checkResults,
+    tested={'onset': ('forceAtFirstCrush', 'applied force at the first crush'),
+            'network': ('stressRatioAtHalfLoad', 'largest sigma/f_t at Fmax/2 before a crush')},
     response=('deltaAtAppliedPeak', 'deltaAtPeak'),
     brief=lambda s: 'peak F %.0f kN at delta %.2f mm, %s crushed' % (s.get('peakForce', float('nan')) / 1e3,
                                                                     s.get('deltaAtPeak', float('nan')) * 1e3,

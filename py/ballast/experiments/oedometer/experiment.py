@@ -37,6 +37,7 @@ from ...params import validate
 from ...runfiles import runStatus, writeAtomic
 from ..parameters import CYCLE_JUMP
 from .. import chain, grains
+from ...settlementlaws import bedChanged
 from ..base import Experiment
 from .. import cyclic
 from ..cyclic import Cyclic
@@ -162,8 +163,11 @@ class Oedometer(Cyclic, Experiment):
         if not rows or rows[-1][0] <= self.lastClosed:
             return
         self.lastClosed = rows[-1][0]
-        before = rows[-2][4:6] if len(rows) > 1 else (0, 0)
-        self.cycleDone(rows[-1][0], rows[-1][2], rows[-1][4] != before[0] or rows[-1][5] != before[1])
+        totals = [(r[4], r[5]) for r in rows[-2:]]   # crushed and abraded so far, after the cycle before and this one
+        if len(totals) == 1:
+            totals.insert(0, (0, 0))
+        crushed, abraded = zip(*totals)
+        self.cycleDone(rows[-1][0], rows[-1][2], bool(bedChanged(crushed, abraded, totals=True)[-1]))
 
     def stopCondition(self):
         """The load phase's end test (checked every 200 steps): the displacement load has reached Fmax, or

@@ -150,7 +150,7 @@ class SingleParticle(Experiment):
             runtime.callback(tester, 'measure', iterPeriod=1, label='singleParticleForces'),
             BallastCrushEngine(ft0=p['ft0'], m=p['m'], pattern=p['pattern'], criterion=p['criterion'],
                                weibullModulus=p['weibullModulus'], seed=p['seed'], rMin=p['rMin'], adjustDt=False,
-                               scaledPWaveStep=p['densityStep'] / p['dtSafety'], label='crush', **p.crushPeriod()),
+                               scaledPWaveStep=p.scaledPWaveStep(), label='crush', **p.crushPeriod()),
             runtime.callback(tester, 'step', iterPeriod=1, label='singleParticleTester')]
         O.dt = p['dtSafety'] * utils.PWaveTimeStep()
         self.adopt()
