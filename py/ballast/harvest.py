@@ -105,7 +105,7 @@ def grains():
     return _table
 
 
-_sig = (None, None)           # ((scene epoch, O.iter, body count), signature)
+_sig = (None, None)           # ((scene epoch, O.iter, body count, kind), signature)
 _stressCache = (None, None)  # ((O.iter, scene signature), all bodies' tensors)
 
 
@@ -115,7 +115,7 @@ def _signature():
     engines' own, and they call invalidate()."""
     global _sig
     kind = grainkinds.current()  # first: after O.load it restores the scene, which moves the epoch
-    key = (runtime.epoch(), O.iter, len(O.bodies))
+    key = (runtime.epoch(), O.iter, len(O.bodies), kind.name)  # the kind: grainkinds.use() within a step
     if _sig[0] != key:
         _sig = (key, (key[0], len(O.bodies), kind.name, kind.signature()))
     return _sig[1]
