@@ -3,10 +3,11 @@ Marsal's, Hardin's and Indraratna's breakage indices between two gradings. Plain
 
 A grain passes a square-mesh sieve of aperture a when its sieve diameter d <= a: a sphere's diameter,
 in general the grain kind's (ballast.grainkinds: GrainKind.sieveDiameters, 2 r_eq; the experiments read
-it with experiments.grains.sieve()). Sieves (SIEVES_MM): the railway ballast sieves of EN 13450 (22.4, 31.5, 40, 50, 63, 80 mm; 0.5 mm for fine particles and
-0.063 mm for fines) and the ISO 565 R20 sizes between them down to the smallest fragment (1, 2, 4, 8,
-11.2, 16 mm). Mass lost by a replacement (the volume the fragments do not fill) can be counted as
-fines that pass the finest sieve, as a sieve analysis of a real sample would see the dust.
+it with experiments.grains.sieve()). Sieves (SIEVES_MM): the railway ballast sieves of EN 13450 (22.4,
+31.5, 40, 50, 63, 80 mm; 0.5 mm for fine particles and 0.063 mm for fines) and the ISO 565 R20 sizes
+between them down to the smallest fragment (1, 2, 4, 8, 11.2, 16 mm). Mass lost by a replacement (the
+volume the fragments do not fill) can be counted as fines that pass the finest sieve, as a sieve
+analysis of a real sample would see the dust.
 docs/grading.md gives the definitions and references.
 """
 import numpy as np

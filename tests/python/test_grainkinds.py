@@ -53,10 +53,12 @@ def test_a_grid_node_is_not_a_grain_but_keeps_its_contact_radius():
     assert r.tolist() == [R] and m.tolist() == [O.bodies[g].state.mass] and x.tolist() == [[0.0, 0.0, 0.0]]
 
 
-def test_a_grid_node_is_not_graded():
+def test_a_grid_node_is_not_graded_nor_drawn():
     g, n = grainAndNode()
     d, m = grains.sieve()
     assert d.tolist() == [2 * R] and m.tolist() == [O.bodies[g].state.mass]
+    x, r, ids = grains.vtk()   # nor drawn as a grain
+    assert ids.tolist() == [g] and r.tolist() == [R] and x.tolist() == [[0.0, 0.0, 0.0]]
 
 
 def test_a_grid_node_is_not_crushed():

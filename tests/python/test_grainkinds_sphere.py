@@ -117,3 +117,13 @@ def test_replace_keeping_mass_scales_fragments_to_the_parent(grain):
         mf = m0 * s ** 3 / (0.4 ** 3 + 0.3 ** 3)
         assert f.state.mass == pytest.approx(mf, rel=1e-13)
         np.testing.assert_allclose(list(f.state.inertia), [0.4 * mf * (s * R) ** 2] * 3, rtol=1e-13)
+
+
+def test_a_clump_and_its_members_are_not_sphere_grains(grain):
+    """A clump's spheres are members of another kind of grain: neither they nor the clump are spheres' grains."""
+    mat = O.bodies[grain].material
+    clumpId, memberIds = O.bodies.appendClumped([utils.sphere((0.1, 0, 0), 0.01, material=mat),
+                                                 utils.sphere((0.115, 0, 0), 0.01, material=mat)])
+    k = grainkinds.kind('sphere')
+    assert k.ids().tolist() == [grain]
+    assert not any(k.isGrain(O.bodies[i]) for i in [clumpId] + list(memberIds))
