@@ -18,6 +18,10 @@ new radius, keeping its tangential force (its history):
 * any other IPhys: the contact's physics is dropped and YADE's own functor creates it afresh at the
   next step (its tangential force restarts from zero).
 
+It acts on one sphere body: a grain kind (ballast.grainkinds) calls it for each sphere it resized (the
+sphere kind: the grain itself). A partner's side is judged by its shape, as YADE's Ig2 functors judge it:
+a Sphere (a grain, a clump member, a grid node) has a reference radius of its own.
+
 tests/python/test_contacts.py compares every case with a contact YADE creates at the new radius.
 """
 import math
@@ -35,8 +39,9 @@ def _pair(own, partner):
 
 
 def resize(bid, rOld, rNew):
-    """After the sphere `bid` changed its radius from rOld to rNew [m] (by utils.growParticle, which
-    sets its own side's refR only): every real contact of it as YADE would create it at rNew.
+    """After the sphere body `bid` changed its radius from rOld to rNew [m] (by utils.growParticle, which
+    sets its own side's refR only; called by its grain kind): every real contact of it as YADE would
+    create it at rNew.
     Returns the number of contacts updated."""
     factor = rNew / rOld
     n = 0

@@ -2,12 +2,23 @@
 crush, and the fragments' growth with keep='volume', injects. A loop over the bodies' own contacts:
 called at events, never per step.
 
-* kinetic: 1/2 m v^2 + 1/2 I w^2 (spheres: isotropic inertia) over the bodies;
+* kinetic: 1/2 m v^2 + 1/2 w.I w over the bodies, I the principal moments of inertia in the body's frame
+  (YADE's State.inertia), so that grains of any kind (ballast.grainkinds: a clump's inertia is not
+  isotropic) and boxes are counted right; 1/2 I w^2 for an isotropic body (a sphere, a wall);
 * elastic: over the real contacts with at least one of the bodies, each counted once. Linear law
   (FrictPhys): Fn^2 / (2 kn) + Fs^2 / (2 ks). Hertz-Mindlin (MindlinPhys): the normal energy of
   F = kno u^1.5 is 2/5 Fn uN, the tangential Fs^2 / (2 ks) with ks the current tangent stiffness.
 """
 from yade import O
+
+
+def rotational(s):
+    """Rotational kinetic energy [J] of a body's State s: 1/2 sum_k I_k w_k^2 with w in the body's frame."""
+    j = s.inertia
+    if j[0] == j[1] == j[2]:  # isotropic: frame-free, and the bits of 1/2 I |w|^2
+        return 0.5 * j[0] * s.angVel.squaredNorm()
+    w = s.ori.conjugate() * s.angVel
+    return 0.5 * (j[0] * w[0] ** 2 + j[1] * w[1] ** 2 + j[2] * w[2] ** 2)
 
 
 def kinetic(ids):
@@ -18,7 +29,7 @@ def kinetic(ids):
         if b is None:
             continue
         s = b.state
-        e += 0.5 * s.mass * s.vel.squaredNorm() + 0.5 * s.inertia[0] * s.angVel.squaredNorm()
+        e += 0.5 * s.mass * s.vel.squaredNorm() + rotational(s)
     return e
 
 

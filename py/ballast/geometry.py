@@ -1,5 +1,6 @@
-"""Sphere geometry shared by the package (the one sphere volume of the Python side; the C++ core has
-its own in FabricStress)."""
+"""Geometry shared by the package: the one sphere volume of the Python side (the C++ core has its own
+in FabricStress), the radius of the sphere of a volume (a grain kind's equivalent radius,
+ballast.grainkinds), a contact's stiffness and a sample's mean grain volume."""
 import math
 
 import numpy as np
@@ -8,6 +9,12 @@ import numpy as np
 def sphereVolume(r):
     """4/3 pi r^3 [m^3] of a radius [m] or an array of radii."""
     return 4.0 / 3.0 * math.pi * np.asarray(r, dtype=float) ** 3 if np.ndim(r) else 4.0 / 3.0 * math.pi * float(r) ** 3
+
+
+def equivalentRadius(v):
+    """(3 v / (4 pi))^(1/3) [m]: the radius of the sphere of volume v [m^3] (a float or an array)."""
+    return (3.0 / (4.0 * math.pi) * np.asarray(v, dtype=float)) ** (1.0 / 3.0) if np.ndim(v) else \
+        (3.0 / (4.0 * math.pi) * float(v)) ** (1.0 / 3.0)
 
 
 def frictPhysStiffness(E1, nu1, r1, E2, nu2, r2):

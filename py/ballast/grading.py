@@ -1,11 +1,13 @@
 """Grading of ballast and breakage indices (issue 12): the percentage passing each sieve by mass, and
 Marsal's, Hardin's and Indraratna's breakage indices between two gradings. Plain NumPy: no YADE.
 
-A sphere of diameter d passes a square-mesh sieve of aperture a when d <= a. Sieves (SIEVES_MM): the
-railway ballast sieves of EN 13450 (22.4, 31.5, 40, 50, 63, 80 mm; 0.5 mm for fine particles and
-0.063 mm for fines) and the ISO 565 R20 sizes between them down to the smallest fragment (1, 2, 4, 8,
-11.2, 16 mm). Mass lost by a replacement (the volume the fragments do not fill) can be counted as
-fines that pass the finest sieve, as a sieve analysis of a real sample would see the dust.
+A grain passes a square-mesh sieve of aperture a when its sieve diameter d <= a: a sphere's diameter,
+in general the grain kind's (ballast.grainkinds: GrainKind.sieveDiameters, 2 r_eq; the experiments read
+it with experiments.grains.sieve()). Sieves (SIEVES_MM): the railway ballast sieves of EN 13450 (22.4,
+31.5, 40, 50, 63, 80 mm; 0.5 mm for fine particles and 0.063 mm for fines) and the ISO 565 R20 sizes
+between them down to the smallest fragment (1, 2, 4, 8, 11.2, 16 mm). Mass lost by a replacement (the
+volume the fragments do not fill) can be counted as fines that pass the finest sieve, as a sieve
+analysis of a real sample would see the dust.
 docs/grading.md gives the definitions and references.
 """
 import numpy as np
@@ -17,7 +19,7 @@ ROUNDING = 1e-10  # [%] a shortfall from 100 % passing this small is the roundin
 
 
 def passing(diameters, masses, sieves=SIEVES_MM, fines=0.0):
-    """Percentage passing each sieve by mass [%]: diameters [m] and masses [kg] of the grains, sieve
+    """Percentage passing each sieve by mass [%]: sieve diameters [m] and masses [kg] of the grains, sieve
     apertures [mm], fines [kg] of dust counted as passing every sieve."""
     d = np.asarray(diameters, dtype=float) * 1e3
     m = np.asarray(masses, dtype=float)

@@ -1,46 +1,50 @@
-"""What the engines read from YADE at each check, read in C++ wherever YADE offers it.
+"""What the engines read from YADE at each check, read in C++ wherever YADE offers it. What a grain is
+(which bodies, their radius, their stress) is the scene's grain kind's answer (:mod:`ballast.grainkinds`).
 
-* The grain table (ids, radii, group masks of the dynamic spheres) is cached and rebuilt only when
-  the scene changed: its signature is the scene's epoch (:func:`ballast.runtime.epoch`, new after
-  O.reset() or O.load()), the body count and ``utils.getSpheresVolume()`` (C++), so any added, erased or resized sphere
-  invalidates it, and so does O.iter going back (O.load). The engines update it in place after
-  their own changes. After changing which bodies are dynamic by hand, call :func:`refresh`.
-* Fabric stresses come from ``utils.bodyStressTensors()`` (YADE's C++ Love-Weber stress per body,
-  eq. 3), converted to one NumPy array in C++ (``ballast.matricesToArray``).
+* The grain table (ids, equivalent radii, group masks of the dynamic grains) is cached and rebuilt only
+  when the scene changed: its signature is the scene's epoch (:func:`ballast.runtime.epoch`, new after
+  O.reset() or O.load()), the body count, the kind and the kind's C++ signature (for spheres
+  ``utils.getSpheresVolume()``), so any added, erased or resized grain invalidates it, and so does O.iter
+  going back (O.load). The engines update it in place after their own changes. After changing which
+  bodies are dynamic by hand, call :func:`refresh`.
+* Fabric stresses come from the kind (spheres: ``utils.bodyStressTensors()``, YADE's C++ Love-Weber
+  stress per body, eq. 3), converted to one NumPy array in C++ (``ballast.matricesToArray``).
 * Contact data for abrasion (normal force, overlap) has no C++ accessor in YADE 2023.02a; it is read
   in one list comprehension, over all real interactions (:func:`contacts`) or only over those of a
   few bodies (:func:`contactsOf`) when a bound has ruled the others out.
 * The stress tensors of one step are cached, so two engines checking at the same step read them once.
 """
 import numpy as np
-from yade import O, utils
+from yade import O
 from yade.wrapper import Sphere
 
-from . import _ballast, runtime
+from . import _ballast, grainkinds, runtime
 
 
 class GrainTable:
-    """Dynamic, free (not clumped) spheres of the scene: ``ids``, ``radii`` [m], ``masks``; and for
-    every body id ``radiusById`` [m] (0 for non-spheres, i.e. walls and facets)."""
+    """The dynamic grains of the scene's kind (``kind``): ``ids``, equivalent radii ``radii`` [m], ``masks``;
+    and, for the contact laws, every body id's ``radiusById`` [m]: the radius of a spherical body (a grain's
+    sphere, a clump member, a membrane's node), 0 for a flat one (walls, facets, boxes), with the materials of
+    both sets (``sphereMaterials``, ``otherMaterials``)."""
 
     def __init__(self):
-        ids, radii, masks = [], [], []
+        self.kind = kind = grainkinds.current()
+        ids, masks = [], []
         self.radiusById = np.zeros(len(O.bodies))
         self.sphereMaterials, self.otherMaterials = {}, {}   # the bodies' own material objects (see _material)
         for b in O.bodies:
             if b is None:
                 continue
-            if not isinstance(b.shape, Sphere):
+            if isinstance(b.shape, Sphere):  # the contact's geometry (Ig2_*_Sphere), whatever the grain kind
+                _material(self.sphereMaterials, b.material)
+                self.radiusById[b.id] = b.shape.radius
+            else:
                 _material(self.otherMaterials, b.material)
-                continue
-            _material(self.sphereMaterials, b.material)
-            self.radiusById[b.id] = b.shape.radius
-            if b.dynamic and not b.isClumpMember:
+            if b.dynamic and kind.isGrain(b):
                 ids.append(b.id)
-                radii.append(b.shape.radius)
                 masks.append(b.groupMask)
         self.ids = np.array(ids, dtype=np.int64)
-        self.radii = np.array(radii, dtype=float)
+        self.radii = np.asarray(kind.radii(self.ids), dtype=float)
         self.masks = np.array(masks, dtype=np.int64)
         self._sign()
 
@@ -58,7 +62,7 @@ class GrainTable:
         return sel
 
     def replaced(self, oldId, newIds, newRadii, mask):
-        """Grain oldId erased, fragments newIds (radii newRadii) added."""
+        """Grain oldId erased, fragments newIds (spheres of radii newRadii [m], group mask mask) added."""
         keep = self.ids != oldId
         self.ids = np.concatenate([self.ids[keep], np.asarray(newIds, dtype=np.int64)])
         self.radii = np.concatenate([self.radii[keep], np.asarray(newRadii, dtype=float)])
@@ -72,6 +76,7 @@ class GrainTable:
             _material(self.sphereMaterials, O.bodies[int(i)].material)
 
     def resized(self, bid, radius):
+        """Grain bid (one sphere) now of radius [m]."""
         self.radii[self.ids == bid] = radius
         self.radiusById[bid] = radius
 
@@ -100,18 +105,19 @@ def grains():
     return _table
 
 
-_sig = (None, None)           # ((scene epoch, O.iter, body count), signature)
+_sig = (None, None)           # ((scene epoch, O.iter, body count, kind), signature)
 _stressCache = (None, None)  # ((O.iter, scene signature), all bodies' tensors)
 
 
 def _signature():
-    """Scene epoch (ballast.runtime: new after O.reset() or O.load()), body count and sphere volume (C++),
-    computed once per step: both engines of a
-    step share it. Changes within a step are the engines' own, and they call invalidate()."""
+    """Scene epoch (ballast.runtime: new after O.reset() or O.load()), body count, the grain kind and its C++
+    signature, computed once per step: both engines of a step share it. Changes within a step are the
+    engines' own, and they call invalidate()."""
     global _sig
-    key = (runtime.epoch(), O.iter, len(O.bodies))
+    kind = grainkinds.current()  # first: after O.load it restores the scene, which moves the epoch
+    key = (runtime.epoch(), O.iter, len(O.bodies), kind.name)  # the kind: grainkinds.use() within a step
     if _sig[0] != key:
-        _sig = (key, (key[0], len(O.bodies), utils.getSpheresVolume()))
+        _sig = (key, (key[0], len(O.bodies), kind.name, kind.signature()))
     return _sig[1]
 
 
@@ -131,11 +137,11 @@ def refresh():
 
 
 def stresses(ids):
-    """Fabric stress tensors (eq. 3) of the bodies ids, (n,3,3) [Pa], compression negative."""
+    """Fabric stress tensors (eq. 3) of the grains ids, (n,3,3) [Pa], compression negative (the kind's)."""
     global _stressCache
     key = (O.iter, _signature())
     if _stressCache[0] != key:
-        _stressCache = (key, _ballast.matricesToArray(utils.bodyStressTensors()))
+        _stressCache = (key, grainkinds.current().stressTensors())
     return _stressCache[1][ids]
 
 

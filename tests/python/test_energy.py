@@ -2,7 +2,7 @@
 import math
 
 import pytest
-from yade import O
+from yade import O, Quaternion
 
 from ballast import energy
 from ballast.scenes import grainBetweenWalls
@@ -19,6 +19,17 @@ def test_kinetic_by_hand():
     m = b.state.mass
     assert energy.kinetic([g]) == pytest.approx(0.5 * m * 0.25 + 0.5 * 0.4 * m * R ** 2 * 4, rel=1e-12)
     assert energy.kinetic([g, w0, w1]) == pytest.approx(energy.kinetic([g]), rel=1e-12)  # walls at rest
+
+
+def test_kinetic_of_a_body_of_unequal_inertia_by_hand():
+    """Principal moments (1, 2, 3) kg m^2 in the body's frame, turned 90 degrees about z, spinning at 1 rad/s
+    about the global x axis, i.e. about its own -y: 1/2 2 1^2 = 1 J (not 1/2 I_x w^2 = 0.5 J)."""
+    g, w0, w1 = grainBetweenWalls(r=R, overlap=OVERLAP, block=False)
+    s = O.bodies[g].state
+    s.vel, s.inertia, s.angVel = (0, 0, 0), (1.0, 2.0, 3.0), (1.0, 0.0, 0.0)
+    s.ori = Quaternion((0, 0, 1), math.pi / 2)
+    assert energy.rotational(s) == pytest.approx(1.0, rel=1e-14)
+    assert energy.kinetic([g]) == pytest.approx(1.0, rel=1e-14)
 
 
 def test_elastic_by_hand_hertz():

@@ -165,3 +165,17 @@ def test_loaded_engine_restores_itself_at_its_next_check(tmp_path):
     O.run(2, True)
     assert type(O.engines[-1]) is BallastCrushEngine and O.engines[-1].nChecks == 4
     assert builtins.crush is O.engines[-1]
+
+
+def test_resize_grain_goes_through_the_kind_and_updates_the_table():
+    """resizeGrain: the grain kind's Resized (r, gamma r, 4/3 pi r^3, m, gamma^3 m) and the table's radius."""
+    from ballast import harvest
+    from ballast.engines.base import resizeGrain
+    g, w1, F, arm, uN = loadedGrain()
+    tab = harvest.grains()
+    m = O.bodies[g].state.mass
+    rs = resizeGrain(tab, g, 0.9)
+    assert rs.radiusBefore == R and rs.radiusAfter == 0.9 * R == O.bodies[g].shape.radius
+    assert rs.volumeBefore == pytest.approx(4 / 3 * math.pi * R ** 3, rel=1e-15)
+    assert rs.massBefore == m and rs.massAfter == pytest.approx(0.9 ** 3 * m, rel=1e-14)
+    assert tab.radii.tolist() == [0.9 * R] and tab.radiusById[g] == 0.9 * R

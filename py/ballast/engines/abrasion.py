@@ -6,7 +6,6 @@ import numpy as np
 from yade import O, Vector3
 
 from .. import _ballast, runtime
-from ..geometry import sphereVolume
 from ..engineparams import ABRASION
 from .base import BallastEngine, docstring, resizeGrain
 from .prefilter import Prefilter
@@ -47,7 +46,8 @@ class BallastAbrasionEngine(BallastEngine):
         self.__dict__['contactsRead'] += len(id1)
         index = np.full(len(tab.radiusById), -1, dtype=np.int64)
         index[ids] = np.arange(len(ids))
-        p0, abrade = _ballast.abrasionCheck(radii, index[id1], index[id2], Fn, tab.radiusById[id1],
+        own1, own2 = tab.kind.grainOf(id1), tab.kind.grainOf(id2)  # a contact's body -> its grain
+        p0, abrade = _ballast.abrasionCheck(radii, index[own1], index[own2], Fn, tab.radiusById[id1],
                                             tab.radiusById[id2], uN, self.strength, self.rMin)
         self.__dict__['maxPressureRatio'] = float(np.max(p0) / self.strength)
         if bound is not None:
@@ -61,11 +61,11 @@ class BallastAbrasionEngine(BallastEngine):
         for k in hit:
             bid = int(ids[k])
             pos = Vector3(O.bodies[bid].state.pos)
-            r, mass, newMass = resizeGrain(tab, bid, g)
+            rs = resizeGrain(tab, bid, g)
             d['nAbraded'] += 1
-            d['volumeLost'] += sphereVolume(r) * (1 - g ** 3)
-            d['massLost'] += mass - newMass
-            self._event('abrasion', bid, pos, r, float(p0[k]), self.strength, [])
+            d['volumeLost'] += rs.volumeBefore * (1 - g ** 3)
+            d['massLost'] += rs.massBefore - rs.massAfter
+            self._event('abrasion', bid, pos, rs.radiusBefore, float(p0[k]), self.strength, [])
         tab.commit()
         self._adjustDt(pw0, ids[hit])
         return True

@@ -14,7 +14,7 @@ import numpy as np
 from yade import O, utils
 from yade.wrapper import PyRunner
 
-from .. import contacts, harvest, runtime
+from .. import harvest, runtime
 from ..densityscaling import scaleDensities
 from ..engineparams import PERIODIC
 from ..params import ParamError, validate, validateAll
@@ -32,15 +32,13 @@ def requireAPeriod(owner, periods):
 
 
 def resizeGrain(tab, bid, factor):
-    """Radius x factor for every radius change the engines make: mass (factor^3), inertia (factor^5) and the
-    grain's refR (utils.growParticle; bodyStressTensors reads refR), then its contacts as YADE would create
-    them at the new radius (ballast.contacts), and the grain table. Returns (old radius, mass before, after)."""
-    b = O.bodies[bid]
-    r, mass = b.shape.radius, b.state.mass
-    utils.growParticle(bid, factor, True)
-    contacts.resize(bid, r, factor * r)
-    tab.resized(bid, factor * r)
-    return r, mass, b.state.mass
+    """Grain bid scaled by factor [-] for every size change the engines make: by its kind (a sphere: radius,
+    mass x factor^3, inertia x factor^5, refR, then its contacts as YADE would create them at the new radius),
+    then the grain table. Returns the kind's Resized (r_eq [m] before and after, volume before [m^3], mass
+    before and after [kg])."""
+    rs = tab.kind.resize(bid, factor)
+    tab.resized(bid, rs.radiusAfter)
+    return rs
 
 
 class BallastEngine(runtime.Runner):

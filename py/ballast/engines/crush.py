@@ -4,10 +4,9 @@ is replaced by the fragments of a pattern of Fig. 1, inside it. The decision for
 core's (pkg/BallastCrushEngine.cpp); fatigue (docs/fatigue.md) and what follows a replacement
 (energy snapshots, growth with keep='volume') are components of their own."""
 import numpy as np
-from yade import O, Vector3, utils
+from yade import O, Vector3
 
 from .. import _ballast, energy, harvest, runtime
-from ..geometry import sphereVolume
 from ..engineparams import CRUSH
 from .base import BallastEngine, docstring
 from .fatigue import FatigueState
@@ -115,39 +114,23 @@ class BallastCrushEngine(BallastEngine):
         return d['_replacements'].grow(tab, self.growTime, d) or changed
 
     def _replace(self, tab, bid, r, se, ft):
-        """Section 2: the grain is erased and replaced by fragments inside it (Fig. 1)."""
-        b = O.bodies[bid]
-        st, mat, color, mask = b.state, b.material, b.shape.color, b.groupMask
-        pos, vel, angVel, mass = Vector3(st.pos), Vector3(st.vel), Vector3(st.angVel), st.mass
+        """Section 2: the grain (r_eq r [m]) is erased and replaced by fragments inside it (Fig. 1), by its kind."""
+        pos = Vector3(O.bodies[bid].state.pos)
         neighbours = energy.partners([bid])
         before = energy.snapshot([bid])  # kinetic and elastic energy of the grain and its neighbours
         frags = _ballast.placeFragments(self.pattern, (pos[0], pos[1], pos[2]), r, self.seed, self._counter)
         self.__dict__['_counter'] += 1
-        O.bodies.erase(bid)
-        bodies = [utils.sphere(Vector3(x, y, z), rf, material=mat, color=color, mask=mask) for x, y, z, rf in frags]
-        if self.keep == 'mass':  # denser fragments: the parent's mass; its momentum then too (centroid at its centre)
-            scale = mass / sum(nb.state.mass for nb in bodies)
-            for nb in bodies:
-                nb.state.mass *= scale
-                nb.state.inertia = nb.state.inertia * scale
-        newIds, newMass = [], 0.0
-        for nb in bodies:
-            # rigid-body velocity of the parent at the fragment's centre: momentum kept with the mass kept
-            nb.state.vel = vel + angVel.cross(nb.state.pos - pos)
-            nb.state.angVel = angVel
-            newMass += nb.state.mass
-            newIds.append(O.bodies.append(nb))
-        tab.replaced(bid, newIds, frags[:, 3], mask)
+        rep = tab.kind.replace(bid, frags, self.keep == 'mass')
+        tab.replaced(bid, rep.ids, rep.radii, rep.mask)
         d = self.__dict__
         d['nCrushed'] += 1
-        d['volumeLost'] += sphereVolume(r) - float(np.sum(sphereVolume(frags[:, 3])))
-        d['massLost'] += mass - newMass
-        self._event('crush', bid, pos, r, se, ft, newIds)
+        d['volumeLost'] += rep.volumeBefore - rep.volumeAfter
+        d['massLost'] += rep.massBefore - rep.massAfter
+        self._event('crush', bid, pos, r, se, ft, rep.ids)
         k = len(d['_events']) - 1
         d['_events'][k]['energyBefore'] = before
-        d['_replacements'].added(k, newIds, neighbours, self.keep == 'volume',
-                                 r ** 3 / float(np.sum(frags[:, 3] ** 3)))
-        return newIds
+        d['_replacements'].added(k, rep.ids, neighbours, self.keep == 'volume', rep.volumeRatio)
+        return rep.ids
 
 
 docstring(BallastCrushEngine, 'Bulk crushing, section 2 (eqs. 1-4, Fig. 1).')

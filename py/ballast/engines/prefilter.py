@@ -3,7 +3,9 @@ the Hertz pressure p0 of eq. 7 exceeds the strength; same decisions as reading e
 Hertz-Mindlin contacts: a fabric-stress bound per grain (``ballast.abrasionBound``) and one from the
 largest overlap ratio (``ballast.sphereContactBound``); linear contacts (FrictPhys): eq. 7 is
 3 kn / (2 pi R), a constant (``harvest.linearBound``). Every verifyPeriod-th check reads all contacts
-and checks the bound; a broken bound switches the prefilter off for the rest of the run."""
+and checks the bound; a broken bound switches the prefilter off for the rest of the run. The bounds take
+a grain's contacts at its own radius: they hold for a kind whose grain is one sphere
+(``GrainKind.oneSphere``); for another kind the prefilter stays off."""
 import numpy as np
 from yade import O, utils
 
@@ -25,6 +27,9 @@ class Prefilter:
             d['prefilterNote'] = ''
             return harvest.contacts(), None
         verify = d['nVerified'] == 0 or eng.nChecks % eng.verifyPeriod == 0
+        if not tab.kind.oneSphere:
+            d['prefilterNote'] = 'grain kind %r: the bounds hold for grains of one sphere only' % tab.kind.name
+            return harvest.contacts(), None
         if verify or self.law is None:
             self.law, why = harvest.contactLaw()
             self.lawNote = why or ''

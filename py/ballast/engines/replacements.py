@@ -5,7 +5,6 @@ from yade import O, Vector3
 
 from .. import energy
 from ..densityscaling import scaleDensities
-from ..geometry import sphereVolume
 from .base import resizeGrain
 
 ENERGY_AFTER_STEPS = 10  # energyAfter: the first check at least this many steps after a replacement ("a few steps")
@@ -55,9 +54,9 @@ class Replacements:
                 centre = sum((b.state.pos * b.state.mass for b in alive), Vector3(0, 0, 0)) / mass
             for b in alive:
                 b.state.pos = centre + (b.state.pos - centre) * f
-                r, mass, newMass = resizeGrain(tab, b.id, f)  # the density stays: mass x f^3
-                ledger['volumeLost'] -= sphereVolume(r) * (f ** 3 - 1)
-                ledger['massLost'] -= newMass - mass
+                rs = resizeGrain(tab, b.id, f)  # the density stays: mass x f^3
+                ledger['volumeLost'] -= rs.volumeBefore * (f ** 3 - 1)
+                ledger['massLost'] -= rs.massAfter - rs.massBefore
             scaleDensities([b.id for b in alive], ledger['scaledPWaveStep'])  # larger: less scaling needed
             g['grown'] = want
             if frac < 1:

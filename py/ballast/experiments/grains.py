@@ -1,23 +1,51 @@
-"""The grains (spheres) of the current scene as arrays, and how far they are from rest: what every
-experiment reads of its sample. A loop over the bodies: at phase ends, per chunk and at the end only."""
+"""The grains of the current scene as arrays, and how far they are from rest: what every experiment
+reads of its sample. What a grain is comes from the scene's grain kind (ballast.grainkinds): walls,
+facets, platens, sleepers and a membrane's nodes are never grains. A loop over the bodies: at phase
+ends, per chunk and at the end only."""
 import math
 
 import numpy as np
-from yade import O, utils
-from yade.wrapper import Sphere
+from yade import utils
+
+from .. import grainkinds
+
+
+def kind():
+    """The current scene's grain kind (ballast.grainkinds.current())."""
+    return grainkinds.current()
+
+
+def bodies():
+    """The grains (yade Bodies), O.bodies order, dynamic or not."""
+    return kind().bodies()
 
 
 def spheres():
-    return [b for b in O.bodies if b is not None and isinstance(b.shape, Sphere)]
+    """The grains (yade Bodies): the name of the time when a grain was always a sphere; see bodies()."""
+    return bodies()
 
 
 def arrays():
-    """(centres [m], radii [m], masses [kg]) of the grains."""
-    bs = spheres()
-    if not bs:
+    """(centres [m], equivalent radii [m], masses [kg]) of the grains, O.bodies order."""
+    k = kind()
+    ids = k.ids()
+    if not len(ids):
         return np.zeros((0, 3)), np.zeros(0), np.zeros(0)
-    x = np.array([[b.state.pos[0], b.state.pos[1], b.state.pos[2]] for b in bs])
-    return x, np.array([b.shape.radius for b in bs]), np.array([b.state.mass for b in bs])
+    return k.centres(ids), k.radii(ids), k.masses(ids)
+
+
+def sieve():
+    """(diameters [m] a sieve sees, masses [kg]) of the grains: what ballast.grading.passing takes."""
+    k = kind()
+    ids = k.ids()
+    return k.sieveDiameters(ids), k.masses(ids)
+
+
+def vtk():
+    """(centres [m], radii [m] to draw, ids) of the grains for a VTK file."""
+    k = kind()
+    ids = k.ids()
+    return k.centres(ids), k.vtkRadii(ids), ids
 
 
 def unbalanced():
@@ -33,4 +61,5 @@ def vRms():
 
 
 def restInfo():
+    """One progress-line word on rest: unbalanced force and v_rms."""
     return 'unbalanced %.3g  v_rms %.2g m/s' % (unbalanced(), vRms())
