@@ -16,7 +16,7 @@ COMMON = {
                   'an integer in [0, 2^31 - 1] (a YADE groupMask)'),
     'adjustDt': Param(True, '-', 'after grains shrink, scale O.dt by the drop of utils.PWaveTimeStep() '
                       '(eq. 5: dt_cr ~ r sqrt(rho/E)); with a time stepper active, until its next update',
-                      boolean, 'True or False', flag),
+                      boolean, '0 or 1', flag),
     'scaledPWaveStep': Param(0.0, 's', 'density scaling: every grain the engine creates, shrinks or grows gets the '
                              "YADE State.densityScaling that makes its own P-wave step r sqrt(rho/E) this long (needs "
                              'NewtonIntegrator.densityScaling); O.dt is then not scaled (adjustDt has no effect); '
@@ -34,8 +34,8 @@ PERIODIC = {
                         NUMBER_NONNEGATIVE),
     'nDo': Param(-1, '-', 'number of checks to run (-1 = no limit)', intBetween(-1, INT64_MAX),
                  'an integer in [-1, 2^63 - 1]'),
-    'initRun': Param(False, '-', 'also check at the first step', boolean, 'True or False', flag),
-    'dead': Param(False, '-', 'switched off', boolean, 'True or False', flag),
+    'initRun': Param(False, '-', 'also check at the first step', boolean, '0 or 1', flag),
+    'dead': Param(False, '-', 'switched off', boolean, '0 or 1', flag),
     'label': Param('', '-', 'name of the engine in the yade namespace', anyText, 'a name'),
     'firstIterRun': Param(0, 'steps', 'first step a check may run at', intBetween(0, INT64_MAX),
                           'an integer in [0, 2^63 - 1]'),
@@ -76,7 +76,7 @@ CRUSH = dict({
     'fatigue': Param(False, '-', 'fatigue: each peak s_p of a grain\'s stress ratio s = sigma_e / f_t takes '
                      '(1 - s_p) s_p^b off its strength (D) and it crushes when s > 1 - D, after s_p^-b equal peaks '
                      '(docs/fatigue.md); fragments start undamaged',
-                     boolean, 'True or False', flag),
+                     boolean, '0 or 1', flag),
     'fatigueExponent': Param(30.0, '-', 'Basquin exponent b: a constant peak s_p >= fatigueEndurance crushes a '
                              'grain after N_f = s_p^-b peaks', *coreRange('fatigueExponent')),
     'fatigueEndurance': Param(0.5, '-', 'endurance ratio: peaks of s below it do no damage',
@@ -94,7 +94,7 @@ ABRASION = dict({
                        'decisions). Hertz-Mindlin contacts: a fabric-stress bound (ballast.abrasionBound) and one from '
                        'the largest overlap ratio; linear contacts (FrictPhys): eq. 7 is 3 kn / (2 pi R), a constant '
                        '(harvest.linearBound). It stays off for other contact laws, and once a full read finds a '
-                       'bound broken', boolean, 'True or False', flag),
+                       'bound broken', boolean, '0 or 1', flag),
     'verifyPeriod': Param(50, '-', 'with the prefilter, every verifyPeriod-th check reads all contacts anyway '
                           'and checks the bound against them', positiveInt, 'an integer >= 1'),
     'maxCandidates': Param(0.5, '-', 'with the prefilter, when more than this fraction of the grains are '

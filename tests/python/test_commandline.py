@@ -14,7 +14,7 @@ import pytest
 from ballast import experiments
 from ballast.params import flag
 from ballast.study.options import StudyError
-from ballast.study.table import Table
+from ballast.tables import Table
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 ENV = dict(os.environ, OMP_NUM_THREADS='1')
@@ -188,16 +188,16 @@ def test_a_bad_yade_batch_row_is_named_before_any_work(table, message, tmp_path,
 def test_a_table_cell_is_read_as_strictly(name):
     """A study table's cells go through the same reader: 0x10 and True are refused, naming line and column."""
     x = EXPERIMENTS[name]
-    good = Table('t.table', 'description %s\nok 3\n' % x['integer']).check(name)
+    good = Table('t.table', 'description %s\nok 3\n' % x['integer']).check(experiments.declaration(name))
     assert good[2][x['integer']] == 3
     for cell in ('0x10', '1_000'):
         with pytest.raises(StudyError) as e:
-            Table('t.table', 'description %s\nbad %s\n' % (x['integer'], cell)).check(name)
+            Table('t.table', 'description %s\nbad %s\n' % (x['integer'], cell)).check(experiments.declaration(name))
         assert 't.table:2: column %s, value %s: %s: %s = %r is not allowed' % (
             x['integer'], cell, x['owner'], x['integer'], cell) in str(e.value) and DECIMAL in str(e.value)
     if x['flag']:
         with pytest.raises(StudyError, match="column %s, value True: .*expected 0 or 1" % x['flag']):
-            Table('t.table', 'description %s\nbad True\n' % x['flag']).check(name)
+            Table('t.table', 'description %s\nbad True\n' % x['flag']).check(experiments.declaration(name))
 
 
 # ---------------------------------------------------------------- in YADE

@@ -22,7 +22,7 @@ LOG_COLUMNS = ('jump', 'cycle', 'cycles', 'to', 'limit', 'grain', 'maxRate', 'ma
                'grainDrift')
 
 
-# attribute -> its parameter (ballast.params.CYCLE_JUMP), in the constructor's order
+# attribute -> its parameter (ballast.experiments.parameters.CYCLE_JUMP), in the constructor's order
 SETTINGS = {'window': 'jumpWindow', 'steady': 'jumpSteady', 'maxDamage': 'jumpMaxDamage', 'margin': 'jumpMargin',
             'growth': 'jumpGrowth', 'after': 'jumpAfter', 'driftNoise': 'jumpDriftNoise',
             'driftDamage': 'jumpDriftDamage'}
@@ -43,7 +43,7 @@ class CycleJumper:
     window [cycles], steady [-], maxDamage [-], margin [cycles], growth [-], after [cycles], driftNoise [-],
     driftDamage [-]: the parameters jumpWindow, jumpSteady, jumpMaxDamage, jumpMargin, jumpGrowth, jumpAfter,
     jumpDriftNoise, jumpDriftDamage
-    (ballast.params.CYCLE_JUMP, checked by the experiment)."""
+    (ballast.experiments.parameters.CYCLE_JUMP, checked by the experiment)."""
 
     def __init__(self, window=10, steady=0.2, maxDamage=0.05, margin=1, growth=1.0, after=0, driftNoise=2.0,
                  driftDamage=0.0):

@@ -164,7 +164,7 @@ class Cyclic:
         """The experiment's call at the end of each simulated cycle (numbered with the jumped ones), with its
         permanent settlement [m] and whether a grain crushed or abraded in it: the jumper reads the grains' damage
         and plans a jump, made at the next step."""
-        ids = [b.id for b in grains.spheres()]
+        ids = grains.kind().ids().tolist()
         if self.jumper.cycleEnded(chain.engine('crush'), ids, cycle, settlement, changed):
             chain.engine(JUMPER).dead = False
 

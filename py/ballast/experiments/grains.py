@@ -34,6 +34,12 @@ def arrays():
     return k.centres(ids), k.radii(ids), k.masses(ids)
 
 
+def volumes():
+    """Volumes [m^3] of the grains, O.bodies order."""
+    k = kind()
+    return k.volumes(k.ids())
+
+
 def sieve():
     """(diameters [m] a sieve sees, masses [kg]) of the grains: what ballast.grading.passing takes."""
     k = kind()

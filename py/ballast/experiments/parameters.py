@@ -128,7 +128,7 @@ CYCLE_JUMP = {
                   'simulated cycles, advance it over many cycles at once, never over a crush (the cycle a grain fails in '
                   'is simulated), then simulate again; the settlement of the jumped cycles is extrapolated from a law '
                   'fitted to the simulated ones, not simulated (docs/cycles.md). Needs fatigue',
-                  boolean, 'True or False', flag),
+                  boolean, '0 or 1', flag),
     'jumpWindow': Param(10, 'cycles', 'simulated cycles without a crush or an abrasion whose damage gives each grain\'s '
                         'rate per cycle; the rates of its two halves tell how steady it is', *coreRange('jumpWindow')),
     'jumpSteady': Param(0.2, '-', 'a grain whose rate differs between the window\'s halves by |b - a| limits a jump to '

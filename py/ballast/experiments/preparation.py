@@ -4,7 +4,6 @@ stiffened from the soft preparation modulus to the true one without a kick."""
 import math
 
 from yade import O, utils
-from yade.wrapper import Sphere
 
 from .. import runtime
 from . import chain, grains
@@ -21,9 +20,10 @@ def restoreFriction(ballast, friction, steelFriction):
     ballast.frictionAngle = friction
     grain = math.tan(friction)
     steel = math.tan(min(friction, steelFriction))
+    kind = grains.kind()   # a grain by its kind: a wall, a platen or a membrane's node is not one
     for i in O.interactions:
         if i.isReal:
-            both = isinstance(O.bodies[i.id1].shape, Sphere) and isinstance(O.bodies[i.id2].shape, Sphere)
+            both = kind.isGrain(O.bodies[i.id1]) and kind.isGrain(O.bodies[i.id2])
             i.phys.tangensOfFrictionAngle = grain if both else steel
 
 

@@ -1,5 +1,5 @@
 """The experiment base's fast-step option, density scaling (docs/performance.md; the parameter is
-ballast.params.DENSITY_STEP, checked by checkDensityStep): how a scene is switched to it and kept on it
+ballast.experiments.parameters.DENSITY_STEP, checked by checkDensityStep): how a scene is switched to it and kept on it
 across O.save / O.load.
 The per-body factors are the C++ core's (pkg/DensityScaling.hpp, through ballast.densityscaling)."""
 from yade import O

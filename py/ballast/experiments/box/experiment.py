@@ -125,8 +125,8 @@ class BoxTest(Cyclic, Experiment):
         plot.plots = {'settlement': ('F',)}   # YADE's live plot: the load against the settlement
         self.startTimeStep(rec.sleeper)
         x, r, m = grains.arrays()
-        self.initial = {'massInitial': float(np.sum(m)), 'nGrainsInitial': len(r), 'diameters': (2 * r).tolist(),
-                        'masses': m.tolist(), 'zBase': rec.z0, 'ids': [b.id for b in grains.spheres()]}
+        self.initial = {'massInitial': float(np.sum(m)), 'nGrainsInitial': len(r), 'diameters': grains.sieve()[0].tolist(),
+                        'masses': m.tolist(), 'zBase': rec.z0, 'ids': grains.kind().ids().tolist()}
         self.gradings = [outputs.grading(self, 0)]
         self.frames = []
         self.startFrames()

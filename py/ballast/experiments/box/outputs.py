@@ -51,10 +51,10 @@ def massLost():
 
 def grading(exp, cycle):
     """The grading now: {'cycle', 'passing' [%] per sieve, 'Bg', 'Br', 'BBI'} against the start of cycling."""
-    r, m = grains.arrays()[1:]
+    d, m = grains.sieve()
     fines = massLost() if exp.p['lostAsFines'] else 0.0
     before = gr.passing(exp.initial['diameters'], exp.initial['masses'])
-    now = gr.passing(2 * r, m, fines=fines)
+    now = gr.passing(d, m, fines=fines)
     return {'cycle': cycle, 'passing': now.tolist(), 'Bg': float(gr.marsal(before, now)),
             'Br': float(gr.hardin(before, now)), 'BBI': float(gr.bbi(before, now))}
 
@@ -213,7 +213,8 @@ def writeFrame(exp):
     written again with it (a killed run keeps its series)."""
     out = os.path.join(exp.out, 'vtk')
     os.makedirs(out, exist_ok=True)
-    x, r, m = grains.arrays()
+    x, r, ids = grains.vtk()
+    m = grains.kind().masses(ids)
     n = len(r)
     names = ['%s-%09d.vtu' % (part, O.iter) for part in ('grains', 'contacts', 'sleeper')]
     unstructuredGrid(os.path.join(out, names[0]), x, np.arange(n), np.arange(1, n + 1), np.ones(n, dtype=int),

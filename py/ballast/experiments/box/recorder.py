@@ -99,6 +99,6 @@ class Recorder:
                             float(np.sum(0.5 * (F[1:] + F[:-1]) * np.diff(s))),
                             int(rows[-1, 6] - rows[0, 6]), int(rows[-1, 7] - rows[0, 7]), int(rows[-1, 6]),
                             int(rows[-1, 7]), max([e.maxDamage for e in crush], default=0.0),
-                            float(np.max(rows[:, 8])) if crush else math.nan, len(grains.spheres()),
+                            float(np.max(rows[:, 8])) if crush else math.nan, len(grains.bodies()),
                             rows[-1, 5], time.process_time() - self.cpu if self.cpu is not None else math.nan])
         self.cpu = time.process_time()

@@ -31,7 +31,6 @@ import numpy as np
 from yade import O
 
 from ... import grading, runtime
-from ...geometry import sphereVolume
 from ...names import fmtTime
 from ...params import validate
 from ...runfiles import runStatus, writeAtomic
@@ -226,8 +225,9 @@ class Oedometer(Cyclic, Experiment):
         self.addEngines(self.loading.t0)
         self.startTimeStep(self.loading.plate)
         x, r, m = grains.arrays()
+        d = grains.sieve()[0]   # the grading's sizes (grains.kind)
         self.initial = {'massInitial': float(np.sum(m)), 'nGrainsInitial': len(r),
-                        'volumeGrains': float(np.sum(sphereVolume(r))), 'radii': r.tolist(), 'masses': m.tolist()}
+                        'volumeGrains': float(np.sum(grains.volumes())), 'diameters': d.tolist(), 'masses': m.tolist()}
         self.startJumping()
         self.probe = Probe(p, self.loading, self.rig, self.dir, self.initial, self.jumper)
         self.outputs.start(self.probe)

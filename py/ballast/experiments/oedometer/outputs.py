@@ -15,12 +15,12 @@ import time
 
 import numpy as np
 from yade import O, plot
-from yade.wrapper import Facet, Sphere
+from yade.wrapper import Facet
 
 from ... import _ballast, grading, harvest, runtime
 from ...runfiles import strictJson, writeAtomic
 from .. import cyclic
-from ..grains import spheres as grainBodies
+from ..grains import bodies as grainBodies, kind as grainKind
 from ..tracker import GrainStates
 from . import figures
 from ..vtk import unstructuredGrid, writeContactsVtu, writeGrainsVtu, writePvd
@@ -83,9 +83,8 @@ class Outputs:
         self.exp, self.fd, self.cpu = exp, None, time.process_time()
         self.grains = GrainStates()  # generations and abrasions from the engines' events
         self.grains.update(exp.degradingEngines())
-        for b in O.bodies:
-            if b is not None and isinstance(b.shape, Sphere):
-                b.shape.color = self.grains.color(b.id)
+        for b in grainBodies():
+            b.shape.color = self.grains.color(b.id)
 
     def open(self):
         """fd.csv written from the rows so far, the live plot filled."""
@@ -206,12 +205,10 @@ class Outputs:
         """Columns of GRAIN_COLUMNS for every sphere (a loop over the grains: at the end and per VTK frame only)."""
         exp = self.exp
         self._recolor()
-        bodies = [b for b in O.bodies if b is not None and isinstance(b.shape, Sphere)]
-        ids = np.array([b.id for b in bodies], dtype=np.int64)
-        x = np.array([tuple(b.state.pos) for b in bodies]).reshape(-1, 3)
-        r = np.array([b.shape.radius for b in bodies])
-        m = np.array([b.state.mass for b in bodies])
-        v = np.array([tuple(b.state.vel) for b in bodies]).reshape(-1, 3)
+        kind = grainKind()   # what a grain is: its ids, centre, equivalent radius, mass
+        ids = kind.ids()
+        x, r, m = kind.centres(ids), kind.radii(ids), kind.masses(ids)
+        v = np.array([tuple(O.bodies[int(i)].state.vel) for i in ids]).reshape(-1, 3)
         ratio = np.zeros(len(ids))
         crush = exp.engine('crush')
         if len(ids):

@@ -66,10 +66,11 @@ class Probe:
     def grading(self):
         """Percentage passing each sieve of grading.SIEVES_MM by mass at the start of loading and now; the
         mass the engines lost counts as fines passing every sieve if lostAsFines."""
-        r, m = grains.arrays()[1:]
+        d, m = grains.sieve()
         fines = sum(e.massLost for e in self.degradingEngines()) if self.p['lostAsFines'] else 0.0
-        return (grading.passing(2 * np.array(self.initial['radii']), self.initial['masses']),
-                grading.passing(2 * r, m, fines=fines))
+        # states saved before the grain kinds kept the radii
+        before = self.initial['diameters'] if 'diameters' in self.initial else 2 * np.array(self.initial['radii'])
+        return (grading.passing(before, self.initial['masses']), grading.passing(d, m, fines=fines))
 
     def inertialNumber(self):
         """The sample's inertial number now (pkg/InertialNumber.hpp): the plate's speed over the sample height,
