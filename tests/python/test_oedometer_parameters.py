@@ -108,7 +108,7 @@ def test_parameters_are_frozen_and_give_the_derived_values():
 
 @pytest.mark.parametrize('values,name,words', [
     ({'Tc': '1'}, 'Tc', 'longer than the load cycle'), ({'f': '8', 'Tc': '0.2'}, 'Tc', 'longer than the load cycle'),
-    ({'vtk': '-1'}, 'vtk', 'a finite number >= 0'), ({'saveEvery': '-0.2'}, 'saveEvery', 'a finite number >= 0'),
+    ({'vtk': '-1'}, 'vtk', 'a finite number >= 0'), ({'saveEvery': '-0.2'}, 'saveEvery', 'load cycles, in every experiment (the oedometer\'s were seconds'),
     ({'abrasionPeriod': '10000000'}, 'abrasionPeriod', 'longer than the load cycle'),
     ({'crush': 'yes'}, 'crush', 'expected 0 or 1'), ({'fatigue': 'True'}, 'fatigue', 'expected 0 or 1'),
     ({'seed': '0x10'}, 'seed', 'decimal'), ({'f': '1_000'}, 'f', 'decimal'), ({'seed': '0o17'}, 'seed', 'decimal')])

@@ -159,13 +159,15 @@ CYCLE_JUMP = {
 
 
 # the outputs of the cyclic piece (experiments.cyclic), the same unit and meaning in every experiment: load cycles
+# (the oedometer's were seconds of loading until 2026-12; a refusal says so)
+CYCLES_ALLOWED = NUMBER_NONNEGATIVE + ' of load cycles, in every experiment (the oedometer\'s were seconds before 2026-12)'
 SAVE_EVERY = Param(0.0, 'cycles', 'besides the states at the start and the end, save the state every saveEvery load '
                    'cycles: a whole number after the cycle closes (state-cycle<N>.yade.gz, N the cycles done: reopen '
                    'or continueFrom goes on from it), a fraction within cycles (0.25: four states a cycle, '
-                   'state-iter<step>.yade.gz); 0 = only those two', nonNegative, NUMBER_NONNEGATIVE)
+                   'state-iter<step>.yade.gz); 0 = only those two', nonNegative, CYCLES_ALLOWED)
 VTK = Param(0.0, 'cycles', 'a VTK frame (the grains with their state, the contact force network, the walls) every vtk '
             'load cycles from the start of loading and one at its end, listed in a .pvd for ParaView (0.1: ten frames '
-            'a cycle; 0 = none)', nonNegative, NUMBER_NONNEGATIVE)
+            'a cycle; 0 = none)', nonNegative, CYCLES_ALLOWED)
 CYCLE_OUTPUTS = {'saveEvery': SAVE_EVERY, 'vtk': VTK}
 
 

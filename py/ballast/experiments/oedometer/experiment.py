@@ -30,7 +30,7 @@ import os
 import numpy as np
 from yade import O
 
-from ... import grading, runtime
+from ... import runtime
 from ...names import fmtTime
 from ...params import validate
 from ...runfiles import runStatus, writeAtomic
@@ -38,12 +38,12 @@ from ..parameters import CYCLE_JUMP
 from .. import chain, grains
 from ...settlementlaws import bedChanged
 from ..base import Experiment
-from .. import cyclic
 from ..cyclic import Cyclic
 from .loading import MODES
 from .outputs import Outputs
 from .packing import StoredPacking
 from .parameters import OWNER, PARAMS, OedometerParameters
+from . import summary
 from .probe import Probe, counter, degradingEngines, engine
 
 CONTAINMENT, CYCLE_CLOSED = 'oedoContainment', 'oedoJumpCycle'
@@ -275,84 +275,8 @@ class Oedometer(Cyclic, Experiment):
 
     # ------------------------------------------------------------------ results
     def summary(self):
-        """What summary.json holds: peak force and displacements, crushes, the mass ledger, timings,
-        the packing and every parameter."""
-        p = self.p
-        wall, cpu = self.seconds()
-        a = np.array(self.outputs.rows)
-        k = int(np.argmax(a[:, 1]))
-        r, m = grains.arrays()[1:]
-        engs = self.degradingEngines()
-        loaded = a[:, 0] >= 0.05 * self.T
-        target = self.loading.target(a[:, 0])
-        steps = self.phases.steps
-        half = min(p.peakTime(), a[-1, 0])  # eq. 8 peaks at T/2
-        F5 = np.where(np.isfinite(a[:, 5]), a[:, 5], a[:, 1]) >= 0.05 * p['Fmax']
-        before, after = self.grading()
-        cycles = float(a[-1, 0] / self.T) + self.cyclesJumped()
-        s = {
-            'runId': self.runId,
-            'peakForce': float(a[k, 1]),  # = peakGrainForce (the name older records have)
-            'peakGrainForce': float(a[k, 1]),
-            'peakAppliedForce': float(np.nanmax(a[:, 5])) if np.isfinite(a[:, 5]).any() else None,
-            'deltaAtPeak': float(a[k, 2]),
-            'deltaAtAppliedPeak': float(np.interp(half, a[:, 0], a[:, 2])),
-            'forceAtAppliedPeak': float(np.interp(half, a[:, 0], a[:, 1])),
-            'seatingDelta': float(a[np.argmax(F5), 2]) if F5.any() else None,
-            'deltaMax': float(np.max(a[:, 2])),
-            'deltaFinal': float(a[-1, 2]),
-            'nCrushed': self.counter('crush', 'nCrushed'),
-            'nAbraded': self.counter('abrasion', 'nAbraded'),
-            'nFatigueCrushed': self.counter('crush', 'nFatigueCrushed'),
-            'volumeLost': float(sum(e.volumeLost for e in engs)),
-            'massInitial': self.initial['massInitial'],
-            'massFinal': float(np.sum(m)),
-            'massLost': float(sum(e.massLost for e in engs)),
-            'dustPercent': 100.0 * float(sum(e.massLost for e in engs)) / self.initial['massInitial'],
-            'wallSeconds': wall,
-            'cpuSeconds': cpu,  # = wall on an idle machine, 1 thread
-            'steps': sum(steps.values()),
-            'stepsByPhase': dict(steps),
-            'wallSecondsByPhase': {k: round(v, 3) for k, v in self.phases.wall.items()},
-            'nGrainsInitial': self.initial['nGrainsInitial'],
-            'nSpheresFinal': len(r),
-            'maxGeneration': int(np.max(self.outputs.grains.generation, initial=0)),
-            'Bg': grading.marsal(before, after),
-            'Br': grading.hardin(before, after),
-            'BBI': grading.bbi(before, after),
-            'lostAsFines': p['lostAsFines'],
-            'plateHeight0': self.loading.z0,
-            'porosity0': self.porosity0(),
-            # a whole number when the loading ended within a time step of one (the step loop stops there)
-            'cycles': int(round(cycles)) if abs(cycles - round(cycles)) * self.T <= O.dt else cycles,
-            'loadingTime': float(a[-1, 0]),
-            'loadingStartTime': self.loading.t0,
-            'forceErrorRms': float(np.sqrt(np.mean((a[loaded, 1] - target[loaded]) ** 2))) if loaded.any() else None,
-            'dtFinal': O.dt,
-            'stoppedBy': self.stoppedBy,
-            'inertialNumber': self.outputs.inertialSummary([e['t'] - self.loading.t0 for e in self.events()
-                                                            if e['kind'] == 'crush']),
-            # the state at the end (the half-load sweep's columns when stopAt stops the loading early)
-            'forceFinal': float(a[-1, 1]),
-            'appliedFinal': float(a[-1, 5]),
-            'unbalancedFinal': grains.unbalanced(),
-            'vRmsFinal': grains.vRms(),
-            'checkSeconds': {e.label: e.checkSeconds for e in engs},
-            'nChecks': {e.label: e.nChecks for e in engs},
-            'maxProtrusion': self.maxProtrusion,
-            'nEscaped': self.nEscaped,
-            'packingFile': self.packing.state().get('file'),
-            'packingReused': self.packing.state().get('reused'),
-            'prepEscaped': self.packing.state().get('escaped'),
-            'stateFiles': [os.path.basename(f) for f in self.saved],
-            'threads': int(os.environ.get('OMP_NUM_THREADS', 1)),
-            'yade': getattr(getattr(__import__('yade'), 'config', None), 'version', ''),
-            'params': dict(p),
-        }
-        if self.jumper is not None:   # cycle jumping: what was simulated, jumped and extrapolated
-            jumps = cyclic.jumpSummary(self.outputs.cycleTable(), self.jumper)
-            s.update({k: v for k, v in jumps.items() if k != 'cycles'})   # cycles: from the loading time, above
-        return s
+        """What summary.json holds (summary.summary)."""
+        return summary.summary(self)
 
     def _writeTiming(self):
         import contextlib
