@@ -12,7 +12,7 @@ pytest.importorskip('yade')
 from yade import O, utils  # noqa: E402
 
 from ballast.experiments.box import check as boxCheck  # noqa: E402
-from ballast.experiments.oedometer import scene  # noqa: E402
+from ballast.experiments import scene  # noqa: E402
 from ballast.experiments.oedometer.parameters import check  # noqa: E402
 from ballast.geometry import frictPhysStiffness  # noqa: E402
 from ballast.params import ParamError  # noqa: E402
