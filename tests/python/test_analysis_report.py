@@ -61,8 +61,10 @@ def test_test_json_holds_the_tests_across_and_within_seeds(tmp_path, capsys):
     assert 'Friedman across Tc within seeds: chi2 = 6, ' in said
     assert 'grains crushed, within seeds: Friedman p = 0.0498 (3 seeds); Page trend: fall, p = 0.00926' in said
     # a declaration that names no further test: the response's alone
+    bare = copy.copy(declaration('oedometer'))
+    bare.tested = {}
     aggregate(fabricateStudy(tmp_path / 's2', runs=runs, missing=[]), outDir=str(tmp_path / 'agg2'), figures=False,
-              experiment=copy.copy(declaration('oedometer')))
+              experiment=bare)
     with open(str(tmp_path / 'agg2' / 'test.json')) as fh:
         t2 = json.load(fh)
     assert t2['blocked']['chi2'] == pytest.approx(6.0) and 'crushes' not in t2 and 'onset' not in t2

@@ -27,7 +27,7 @@ TOL_RESUME = 2e-3        # [-] a resumed cycle's settlement against the run that
 
 @pytest.fixture(scope='module')
 def run(tmp_path_factory):
-    test = BoxTest(results=str(tmp_path_factory.mktemp('box')), runId='small', vtk=True, saveEvery=2, **SMALL)
+    test = BoxTest(results=str(tmp_path_factory.mktemp('box')), runId='small', vtk=1, saveEvery=2, **SMALL)
     summary = test.run()
     return test, summary
 
@@ -210,7 +210,7 @@ def test_a_killed_run_resumed_goes_on_in_its_folder_to_its_end(run, tmp_path):
     per sample period if the cut were wrong), run.json finished and saying where it went on from."""
     test, s = run
     folder = killedCopy(test, str(tmp_path), 'state-cycle0000002.yade.gz')
-    s2 = BoxTest(results=str(tmp_path), runId=test.runId, resume=True, vtk=True, saveEvery=2, **SMALL).run()
+    s2 = BoxTest(results=str(tmp_path), runId=test.runId, resume=True, vtk=1, saveEvery=2, **SMALL).run()
     assert sorted(os.listdir(str(tmp_path))) == [test.runId]   # no new folder
     old = pd.read_csv(os.path.join(test.out, 'cycles.csv')).drop(columns='cpuSeconds')
     new = pd.read_csv(os.path.join(folder, 'cycles.csv'))

@@ -77,8 +77,8 @@ def test_crushing_period_is_honoured():
     (BallastAbrasionEngine, dict(strength=1.0, gamma=1e-300), ['gamma', '1e-300', '[0.5, 1)']),
     (BallastAbrasionEngine, dict(strength=1.0, gamma=0.0), ['gamma', '0.0']),
     (BallastAbrasionEngine, dict(strength=0.0), ['strength', '0.0']),
-    (BallastAbrasionEngine, dict(strength=1.0, adjustDt=1), ['adjustDt', 'True or False']),
-    (BallastAbrasionEngine, dict(strength=1.0, prefilter='yes'), ['prefilter', "'yes'", 'True or False']),
+    (BallastAbrasionEngine, dict(strength=1.0, adjustDt=1), ['adjustDt', '0 or 1']),
+    (BallastAbrasionEngine, dict(strength=1.0, prefilter='yes'), ['prefilter', "'yes'", '0 or 1']),
     (BallastAbrasionEngine, dict(strength=1.0, verifyPeriod=0), ['verifyPeriod', '0', '>= 1']),
     (BallastAbrasionEngine, dict(strength=1.0, maxCandidates=1.5), ['maxCandidates', '1.5', '[0, 1]']),
 ])

@@ -472,7 +472,12 @@ def test_a_run_of_cycles_stopped_and_continued_in_a_fresh_process(strong, root, 
     assert b.shape == a.shape == (2, len(CYCLE_COLUMNS))
     np.testing.assert_allclose(b[:, :2], a[:, :2], rtol=1e-9)
     np.testing.assert_allclose(b[:, 2:4], a[:, 2:4], rtol=0, atol=TOL_RESUME_CYCLES * s['deltaMax'])
-    np.testing.assert_array_equal(b[:, 4:], a[:, 4:])
+    counts = [list(CYCLE_COLUMNS).index(c) for c in ('crushes', 'abrasions', 'nCrushed', 'nAbraded', 'maxDamage', 'nGrains')]
+    np.testing.assert_array_equal(b[:, counts], a[:, counts])
+    # the largest stress ratio of a cycle is read from the grains' forces: to YADE's rounding of a resumed scene
+    ratio = list(CYCLE_COLUMNS).index('maxStressRatio')
+    np.testing.assert_allclose(b[:, ratio], a[:, ratio], rtol=1e-3)
+    np.testing.assert_array_equal(b[:, len(CYCLE_COLUMNS) - 1:], a[:, len(CYCLE_COLUMNS) - 1:])   # B_g
     fa = np.loadtxt(os.path.join(run.out, 'fd.csv'), delimiter=',', skiprows=1, ndmin=2)
     fb = np.loadtxt(os.path.join(out, 'fd.csv'), delimiter=',', skiprows=1, ndmin=2)
     assert fb.shape == fa.shape

@@ -1,5 +1,5 @@
-"""ballast.oedometer.packing: the falling cloud (no overlaps, inside the cylinder, sizes as asked) and
-the packing store (built once, then the same grains for every run of the seed)."""
+"""ballast.oedometer.packing: the packing store (built once, then the same grains for every run of the seed).
+The cloud of the shared sample builder is tested in test_sample.py."""
 import json
 import math
 import os
@@ -9,28 +9,9 @@ import pytest
 
 pytest.importorskip('yade')
 from ballast.experiments import grains  # noqa: E402
-from ballast.oedometer import Oedometer, StoredPacking, check  # noqa: E402
+from ballast.oedometer import Oedometer  # noqa: E402
 
 SMALL = dict(diameter=0.12, height=0.06, dMin=0.02, dMax=0.026, progress=60)
-
-
-def test_cloud_places_grains_apart_inside_the_cylinder():
-    """YADE's makeCloud: no overlaps, sizes in [dMin, dMax], centres inside the cylinder by a grain radius,
-    just enough volume, the lowest grains kept, the same cloud for the same seed."""
-    p = check(SMALL)
-    Rin = p['diameter'] / 2
-    vSolid = 0.5 * math.pi * Rin ** 2 * p['height']
-    pos, r, top = StoredPacking().cloud(p, 3, vSolid, Rin)
-    assert np.all((2 * r >= p['dMin'] * (1 - 1e-12)) & (2 * r <= p['dMax'] * (1 + 1e-12)))
-    d = np.linalg.norm(pos[:, None] - pos[None], axis=2)
-    iu = np.triu_indices(len(r), 1)
-    assert np.all(d[iu] >= (r[:, None] + r[None])[iu])
-    assert np.all(np.hypot(pos[:, 0], pos[:, 1]) < Rin - p['dMax'] / 2)
-    v = np.cumsum(4 / 3 * math.pi * r ** 3)
-    assert v[-1] >= vSolid > v[-2]
-    assert top == pytest.approx(np.max(pos[:, 2] + r), rel=1e-12) and np.all(pos[:, 2] - r > 0)
-    again, r2, _ = StoredPacking().cloud(p, 3, vSolid, Rin)
-    np.testing.assert_array_equal(again, pos)
 
 
 def test_store_builds_once_then_reuses(tmp_path):
