@@ -80,6 +80,16 @@ def test_a_short_run_writes_every_output(run):
     tau = np.mod(samples.t, 0.025)
     assert np.allclose(samples.F, 300 + 3700 * 0.5 * (1 - np.cos(2 * np.pi * 40 * tau)), atol=4000 * 1e-3)
     assert (cyc.resilient >= 0).all() and (cyc.settlementPeak >= cyc.settlement - 1e-12).all()
+    # the quasi-static measures (experiments.quasistatic): each cycle's largest and median inertial number are those
+    # of its samples, the steps of a cycle T / dt (to the samples' step), the response ratio from the resilient stiffness
+    first = samples[samples.t <= cyc.t[0]].inertialNumber.dropna()   # the first cycle's samples, its close included
+    assert cyc.inertialMax[0] == pytest.approx(first.max(), rel=1e-6)
+    assert cyc.inertialMedian[0] == pytest.approx(first.median(), rel=1e-6)
+    steady = np.flatnonzero(cyc.dt.to_numpy()[1:] == cyc.dt.to_numpy()[:-1]) + 1   # cycles at an unchanged step
+    assert len(steady) and (cyc.stepsPerCycle > 0).all()
+    np.testing.assert_allclose(cyc.stepsPerCycle[steady], 0.025 / cyc.dt[steady], rtol=0.02)
+    # no resilient deflection (the bed crushes and the sleeper sinks on through the cycle): no stiffness, no ratio
+    assert (np.isnan(cyc.responseRatio) == (cyc.resilient == 0)).all() and not (cyc.responseRatio <= 1).any()
     with open(os.path.join(test.out, 'summary.json')) as fh:
         assert json.load(fh)['nCrushed'] == s['nCrushed']
 

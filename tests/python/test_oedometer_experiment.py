@@ -391,6 +391,12 @@ def test_three_cycles_write_cycles_csv(strong, root):
         within = chk[(chk.t >= (k - 1) * T) & (chk.t <= k * T + 1e-9)]
         assert ratio == pytest.approx(within.maxCrushableRatio.max(), rel=1e-6)
     assert (cyc.nGrains == s['nGrainsInitial']).all() and (cyc.cpuSeconds > 0).all()
+    # the quasi-static measures (experiments.quasistatic): the step, the steps of a cycle (T / dt at a fixed step),
+    # the inertial number's largest and median, the load's period over the bed's response time
+    np.testing.assert_allclose(cyc.dt, s['dtFinal'], rtol=1e-8)   # written to 9 digits
+    np.testing.assert_allclose(cyc.stepsPerCycle[1:], T / cyc.dt[1:], rtol=1e-3)
+    assert (cyc.inertialMax >= cyc.inertialMedian).all() and (cyc.inertialMedian > 0).all()
+    assert (cyc.responseRatio > 1).all()
     later = fd[:, 0] > 0.6 * T
     assert np.min(fd[later, 5]) == pytest.approx(0.2 * FMAX, rel=1e-3)  # the applied force's lower bound
     assert os.path.getsize(os.path.join(run.out, 'cycles.png')) > 0

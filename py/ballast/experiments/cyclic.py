@@ -20,6 +20,12 @@ maxDamage      -      the largest fatigue damage D of a grain at the cycle's end
 maxStressRatio -      the largest sigma/f_t of a grain that can crush, over the crushing checks of the cycle
 nGrains        -      grains (and fragments) at the cycle's end
 cpuSeconds     s      CPU time of the cycle (NaN for the first cycle of a process that went on from a state)
+dt             s      the time step at the cycle's end
+stepsPerCycle  -      the time steps the cycle took (NaN for a cycle a state saved before 2026-12 went on in)
+inertialMax    -      the largest inertial number of the bed over the cycle (:mod:`.quasistatic`: NaN where the
+                      grains carried under 1 % of the peak load)
+inertialMedian -      its median over the cycle
+responseRatio  -      the load's period over the bed's slowest response time (:mod:`.quasistatic`)
 jumped         -      with cycle jumping: the cycles jumped before this row
 settlementJumped m    with cycle jumping: the settlement extrapolated over those cycles (settlement laws)
 ============== ====== ===================================================================================
@@ -39,7 +45,8 @@ from . import chain, grains
 from .cyclejump import CycleJumper
 
 COLUMNS = ('cycle', 't', 'settlement', 'resilient', 'crushes', 'abrasions', 'nCrushed', 'nAbraded', 'maxDamage',
-           'maxStressRatio', 'nGrains', 'cpuSeconds')
+           'maxStressRatio', 'nGrains', 'cpuSeconds', 'dt', 'stepsPerCycle', 'inertialMax', 'inertialMedian',
+           'responseRatio')
 JUMP_COLUMNS = ('jumped', 'settlementJumped')
 CHECKPOINT = 'state-cycle%07d.yade.gz'   # the state saved after a cycle (saveEvery), named by the cycles done
 WITHIN_CYCLE = 'state-iter%09d.yade.gz'  # a state saved within cycles (saveEvery a fraction), named by the step

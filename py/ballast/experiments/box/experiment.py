@@ -135,7 +135,10 @@ class BoxTest(Cyclic, Experiment):
     def sample(self):
         """The recorder's sample (a callback at simulated times); after the cycles of the 1-2-5 series (1, 2, 5,
         10, 20, ...) the grading and a VTK frame."""
-        k = self.recorder.sample()
+        p = self.p
+        if getattr(self, '_peak', None) is None:   # the load history is read once a process (loadFile: a CSV)
+            self._peak = p.history().peak
+        k = self.recorder.sample(p, p['sleeperWidth'] * p.sleeperLength(), self._peak)
         row = self.recorder.samples[-1]
         if not self.onFloor and self.recorder.underside() < self.p['dMin'] / 2:
             # YADE has no contact between a box and a wall: the sleeper would fall through the floor

@@ -8,7 +8,7 @@ from yade import O
 
 from ... import runtime
 from ...engines import BallastAbrasionEngine, BallastCrushEngine
-from .. import chain, grains
+from .. import chain, grains, quasistatic
 
 LOAD = 'boxLoad'   # the label of the load on the sleeper (InterpolatingDirectedForceEngine)
 
@@ -19,9 +19,12 @@ class Recorder:
     a row of cycles.csv at each cycle's end: the permanent settlement (at the seating load), the resilient
     deflection, the work of the load over the cycle, crushes and abrasions, the largest fatigue damage."""
 
-    COLUMNS = ('t', 'cycle', 'F', 'Fgrains', 'settlement', 'tilt', 'nCrushed', 'nAbraded', 'maxStressRatio')
+    COLUMNS = ('t', 'cycle', 'F', 'Fgrains', 'settlement', 'tilt', 'nCrushed', 'nAbraded', 'maxStressRatio',
+               'inertialNumber')
     CYCLE_COLUMNS = ('cycle', 't', 'settlement', 'settlementPeak', 'resilient', 'work', 'crushes', 'abrasions',
-                     'nCrushed', 'nAbraded', 'maxDamage', 'maxStressRatio', 'nGrains', 'tilt', 'cpuSeconds')
+                     'nCrushed', 'nAbraded', 'maxDamage', 'maxStressRatio', 'nGrains', 'tilt', 'cpuSeconds', 'dt',
+                     'stepsPerCycle', 'inertialMax', 'inertialMedian', 'responseRatio')
+    iter0 = None   # O.iter at the current cycle's start (states saved before the steps per cycle have none)
 
     def __init__(self, sleeper=None, z0=None, t0=None, period=None):
         self.sleeper, self.z0, self.t0, self.period = sleeper, z0, t0, period
@@ -33,7 +36,8 @@ class Recorder:
         self.jumped = 0                      # cycles advanced by cycle jumping, not simulated (docs/cycles.md)
 
     def state(self):
-        return {k: getattr(self, k) for k in ('sleeper', 'z0', 't0', 'period', 'samples', 'cycles', 'start', 'jumped')}
+        return {k: getattr(self, k) for k in ('sleeper', 'z0', 't0', 'period', 'samples', 'cycles', 'start', 'jumped',
+                                              'iter0')}
 
     def restored(self):
         """After a restore: the open cycle's CPU counted from here (a process's clock does not carry over; it was
@@ -73,25 +77,33 @@ class Recorder:
         for row in self.samples[self.start:]:
             row[1] += cycles
 
-    def sample(self):
-        """A row of samples.csv; returns the cycle it closed, or 0."""
+    def inertialNumber(self, p, area, peak):
+        """The bed's inertial number under the sleeper now (experiments.quasistatic): its speed over the bed's depth
+        under it, the grains' force on it over its footprint `area` [m^2], NaN below 1 % of the `peak` load [N]."""
+        return quasistatic.inertialNumber(p, O.bodies[self.sleeper].state.vel[2], self.underside(), self.grainsForce(),
+                                          area, peak)
+
+    def sample(self, p, area, peak):
+        """A row of samples.csv; returns the cycle it closed, or 0. p: the run's parameters; area [m^2] and peak
+        [N]: the sleeper's footprint and the peak load, for the inertial number."""
         counts = [sum(getattr(e, k) for e in O.engines if isinstance(e, kind)) for kind, k in
                   ((BallastCrushEngine, 'nCrushed'), (BallastAbrasionEngine, 'nAbraded'))]
         crush = [e for e in O.engines if isinstance(e, BallastCrushEngine)]
         ratio = max([e.maxCrushableRatio for e in crush], default=math.nan)   # at the engine's last check
         row = [O.time - self.t0, self.cycle(), self.applied(), self.grainsForce(), self.z0 - self.underside(),
-               self.tilt()] + counts + [ratio]
+               self.tilt()] + counts + [ratio, self.inertialNumber(p, area, peak)]
         self.samples.append(row)
         if self.start is None:
-            self.start, self.cpu = len(self.samples) - 1, time.process_time()
+            self.start, self.cpu, self.iter0 = len(self.samples) - 1, time.process_time(), O.iter
         elif row[1] > self.samples[self.start][1]:   # a cycle ended at this sample: it opens the next one
-            self.closeCycle(len(self.samples) - 1)
+            self.closeCycle(len(self.samples) - 1, p)
             self.samples, self.start = self.samples[-1:], 0
             return int(row[1])
         return 0
 
-    def closeCycle(self, end):
-        rows = np.array(self.samples[self.start:end + 1], dtype=float)
+    def closeCycle(self, end, p):
+        # rows of states saved before the inertial number have 9 entries
+        rows = np.array([list(r) + [math.nan] * (10 - len(r)) for r in self.samples[self.start:end + 1]], dtype=float)
         F, s = rows[:, 2], rows[:, 4]
         crush = [e for e in O.engines if isinstance(e, BallastCrushEngine)]
         n = int(rows[-1, 1])
@@ -100,5 +112,10 @@ class Recorder:
                             int(rows[-1, 6] - rows[0, 6]), int(rows[-1, 7] - rows[0, 7]), int(rows[-1, 6]),
                             int(rows[-1, 7]), max([e.maxDamage for e in crush], default=0.0),
                             float(np.max(rows[:, 8])) if crush else math.nan, len(grains.bodies()),
-                            rows[-1, 5], time.process_time() - self.cpu if self.cpu is not None else math.nan])
-        self.cpu = time.process_time()
+                            rows[-1, 5], time.process_time() - self.cpu if self.cpu is not None else math.nan, O.dt,
+                            O.iter - self.iter0 if self.iter0 is not None else math.nan,
+                            *quasistatic.cycleStats(rows[:, 9]),
+                            quasistatic.responseRatio(self.period, O.bodies[self.sleeper].state.mass +
+                                                      quasistatic.bedMass(p, grains.arrays()[2]),
+                                                      float(np.max(F) - np.min(F)), float(np.max(s) - s[-1]))])
+        self.cpu, self.iter0 = time.process_time(), O.iter

@@ -19,7 +19,8 @@ from yade.wrapper import Facet
 
 from ... import _ballast, grading, harvest, runtime
 from ...runfiles import strictJson, writeAtomic
-from .. import cyclic
+from .. import cyclic, quasistatic
+from ..quasistatic import INERTIAL_BOUND
 from ..grains import bodies as grainBodies, kind as grainKind
 from ..tracker import GrainStates
 from . import figures
@@ -27,7 +28,6 @@ from ..vtk import unstructuredGrid, writeContactsVtu, writeGrainsVtu, writePvd
 
 FD_COLUMNS = ('t', 'F', 'delta', 'nCrushed', 'nAbraded', 'Fapplied')
 CHECK_COLUMNS = ('t', 'iter', 'crushes', 'maxStressRatio', 'maxCrushableRatio', 'inertialNumber')
-INERTIAL_BOUND = 1e-3  # [-] the quasi-static regime's inertial number (GDR MiDi 2004): above it a run warns
 EVENT_COLUMNS = ('kind', 't', 'iter', 'id', 'x', 'y', 'z', 'radius', 'value', 'strength', 'newIds', 'EkBefore',
                  'EeBefore', 'EkAfter', 'EeAfter', 'EkGrown', 'EeGrown')
 ENERGY_KEYS = ('energyBefore', 'energyAfter', 'energyGrown')  # [kinetic, elastic] [J] of a replacement
@@ -45,12 +45,13 @@ class Outputs:
     def __init__(self):
         self.rows, self.checkRows, self.vtkFrames, self.cycleRows = [], [], [], []
         self.cpu = None   # process CPU [s] at the current cycle's start (a process's clock: not saved)
+        self.cycleIter = None   # O.iter at the current cycle's start
         self.grains = GrainStates()
         self.exp = self.fd = None   # the Probe; fd.csv, opened at the first row written
 
     def state(self):
         return {'rows': runtime.packRows(self.rows), 'checkRows': runtime.packRows(self.checkRows),
-                'vtkFrames': self.vtkFrames, 'cycleRows': self.cycleRows}
+                'vtkFrames': self.vtkFrames, 'cycleRows': self.cycleRows, 'cycleIter': self.cycleIter}
 
     @classmethod
     def fromState(cls, s, ref=None):
@@ -59,6 +60,7 @@ class Outputs:
         obj.checkRows = runtime.unpackRows(s['checkRows'])
         obj.vtkFrames = [tuple(f) for f in s['vtkFrames']]
         obj.cycleRows = [tuple(r) for r in s['cycleRows']]
+        obj.cycleIter = s.get('cycleIter')   # states saved before the steps per cycle: unknown for the open cycle
         return obj
 
     # ------------------------------------------------------------------ while loading
@@ -74,6 +76,7 @@ class Outputs:
         if p['vtk'] > 0:
             engines.append(runtime.callback(self, 'vtk', virtPeriod=p['vtk'] * exp.T, initRun=True, label=self.VTK))
         O.engines = O.engines + engines
+        self.cycleIter = O.iter
         self.bind(exp)
         self.open()
 
@@ -131,10 +134,10 @@ class Outputs:
         rows, prev = [], (0, 0)
         for row in self.cycleRows:
             row = list(row) + [0.0] * (len(row) < 8)   # states saved before maxDamage: 7 entries
-            row += [nan] * (11 - len(row))             # before the shared schema: 8
+            row += [nan] * (16 - len(row))             # before the shared schema: 8, before the quasi-static measures: 11
             rows.append(dict(zip(cyclic.COLUMNS + ('Bg',), (
                 row[0], row[1], row[2], row[3], row[4] - prev[0], row[5] - prev[1], row[4], row[5], row[7], row[8],
-                row[9], row[10], row[6]))))
+                row[9], row[10], row[11], row[12], row[13], row[14], row[15], row[6]))))
             prev = row[4:6]
         return cyclic.table(rows, ('Bg',), self.exp.jumper)
 
@@ -158,12 +161,19 @@ class Outputs:
         within = a[(a[:, 0] >= (simulated - 1) * exp.T) & (a[:, 0] <= t), 2]
         deepest = max(float(np.max(within, initial=settlement)), settlement)
         crushed, abraded = exp.counter('crush', 'nCrushed'), exp.counter('abrasion', 'nAbraded')
-        ratios = [row[5] for row in self.checkRows if len(row) > 5 and (simulated - 1) * exp.T <= row[0] <= t]
+        checks = [row for row in self.checkRows if (simulated - 1) * exp.T <= row[0] <= t]
+        ratios = [row[5] for row in checks if len(row) > 5]
+        inertialMax, inertialMedian = quasistatic.cycleStats([row[6] for row in checks if len(row) > 6])
+        p = exp.p
+        mass = O.bodies[exp.loading.plate].state.mass + quasistatic.bedMass(p, grainKind().masses(grainKind().ids()))
         cpu = time.process_time()
         self.cycleRows.append((k, t, settlement, deepest - settlement, crushed, abraded, grading.marsal(*exp.grading()),
                                exp.counter('crush', 'maxDamage'), max(ratios) if ratios else math.nan,
-                               len(grainBodies()), cpu - self.cpu if self.cpu is not None else math.nan))
-        self.cpu = cpu
+                               len(grainBodies()), cpu - self.cpu if self.cpu is not None else math.nan, O.dt,
+                               O.iter - self.cycleIter if self.cycleIter is not None else math.nan, inertialMax,
+                               inertialMedian, quasistatic.responseRatio(exp.T, mass, p['Fmax'] - p['Fmin'],
+                                                                         deepest - settlement)))
+        self.cpu, self.cycleIter = cpu, O.iter
         cyclic.write(os.path.join(exp.out, 'cycles.csv'), self.cycleTable())
 
     def logCheck(self):

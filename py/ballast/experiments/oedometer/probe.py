@@ -7,12 +7,10 @@ import math
 import numpy as np
 from yade import O
 
-from ... import _ballast, grading, harvest
-from ...densityscaling import scaledDensity
+from ... import grading
 from ...engines import BallastEngine
-from .. import grains
+from .. import grains, quasistatic
 
-LOADED = 0.01  # [-] the inertial number is reported once the grains carry this share of Fmax
 
 
 def engine(label):
@@ -77,10 +75,5 @@ class Probe:
         the grains' mean diameter, their density as their inertia sees it under density scaling, and the
         grains' force on the plate over the cylinder's section; NaN while the grains carry less than LOADED
         Fmax (the seating, where p -> 0 makes any motion look inertial)."""
-        F, h, radii = self.loading.force(), self.loading.top(), harvest.grains().radii
-        if not (F >= LOADED * self.p['Fmax'] and h > 0 and len(radii)):
-            return math.nan
-        rate = O.bodies[self.loading.plate].state.vel[2] / h
-        rho = scaledDensity(radii, self.p['density'], self.p['young'], self.p.scaledPWaveStep())
-        return float(_ballast.inertialNumber(rate, 2 * float(np.mean(radii)), rho,
-                                             F / (math.pi * self.cylinder.Rin ** 2)))
+        return quasistatic.inertialNumber(self.p, O.bodies[self.loading.plate].state.vel[2], self.loading.top(),
+                                          self.loading.force(), math.pi * self.cylinder.Rin ** 2, self.p['Fmax'])
