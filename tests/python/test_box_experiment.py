@@ -16,6 +16,8 @@ from ballast.experiments.box import BoxTest  # noqa: E402
 from ballast.experiments.box.zones import ZONES  # noqa: E402
 from ballast.params import ParamError  # noqa: E402
 
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+
 SMALL = dict(boxLength=0.3, boxWidth=0.12, bedDepth=0.1, layers=2, sleeperWidth=0.1, sleeperHeight=0.05, sleeperMass=5,
              dMin=0.02, dMax=0.03, young=3e9, prepYoung=3e8, f=40, seatLoad=300, peakLoad=4000, cycles=3, ft0=3.5e4,
              rMin=0.008, strength=1.5e10, progress=60)
@@ -292,3 +294,20 @@ def test_a_sleeper_that_reaches_the_floor_stops_the_run(tmp_path):
     last = pd.read_csv(os.path.join(test.out, 'samples.csv')).settlement.iloc[-1]   # where it stopped, mid-cycle
     top = test.initial['zBase']                                                      # the underside at the start
     assert top - SMALL['dMin'] / 2 < last < top - SMALL['dMin'] / 2 + SMALL['dMin']  # on the floor, not below it
+
+
+def test_a_state_saved_before_the_new_floors_reopens_and_goes_on(tmp_path):
+    """A record's end state of the box study (commit 97d3503's code, vtk a flag, cycles.csv rows of 15 columns,
+    no steps per cycle): reopened, its parameters come back in today's units (vtk False: no frames), it goes on one
+    cycle, and cycles.csv keeps its 100 recorded rows with the new measures of the new cycle only."""
+    state = os.path.join(ROOT, 'docs', 'studies', 'box', 'runs', 'box-seed1-c100', 'state-end.yade.gz')
+    old = pd.read_csv(os.path.join(os.path.dirname(state), 'cycles.csv'))
+    run = BoxTest.reopen(state, results=str(tmp_path), runId='old')
+    assert run.p['vtk'] == 0.0 and run.p['saveEvery'] == 50
+    s = run.load(1)
+    cyc = pd.read_csv(os.path.join(run.out, 'cycles.csv'))
+    assert s['cycles'] == 101 and list(cyc.cycle) == list(range(1, 102))
+    for c in ('settlement', 'resilient', 'work', 'tilt', 'nGrains'):
+        np.testing.assert_allclose(cyc[c][:100], old[c], rtol=1e-8, err_msg=c)
+    assert cyc.inertialMax[:100].isna().all() and np.isfinite(cyc.inertialMax[100])
+    assert cyc.responseRatio[100] > 1 and np.isnan(cyc.stepsPerCycle[100])   # the open cycle's first step unknown

@@ -42,6 +42,7 @@ from . import chain, timestep
 from .phases import Phases
 from .rundir import RunDirectory, StateFileError, checkStateFile, processAlive
 
+PARAM_UNITS = 2   # the saved parameters' units: 2 since saveEvery and vtk count load cycles (2026-12)
 LOADED_STIFFNESS_MARGIN = 2.0  # [-] densityStep: the loading body's contacts may stiffen this much as grains crush
 
 
@@ -226,13 +227,18 @@ class Experiment:
                 own[loaded] = math.sqrt(b.state.mass / (LOADED_STIFFNESS_MARGIN * K)) if b.dynamic and K > 0 else None
             timestep.startDensityScaling(self, p['densityStep'], p.scaledPWaveStep(), own)
 
+    def savedParams(self, values, units):
+        """The parameters of a saved state in today's units (units: PARAM_UNITS when it was saved; subclasses convert
+        what changed)."""
+        return values
+
     def baseState(self):
         wall, cpu = self.seconds()
-        return {'params': dict(self.p), 'saved': self.saved, 'wallSeconds': wall, 'cpuSeconds': cpu,
-                'phases': runtime.ref(self.phases), 'dir': runtime.ref(self.dir)}
+        return {'params': dict(self.p), 'paramUnits': PARAM_UNITS, 'saved': self.saved, 'wallSeconds': wall,
+                'cpuSeconds': cpu, 'phases': runtime.ref(self.phases), 'dir': runtime.ref(self.dir)}
 
     def setBaseState(self, s, ref):
-        self.p = self.Parameters.fromSaved(s['params'])
+        self.p = self.Parameters.fromSaved(self.savedParams(dict(s['params']), s.get('paramUnits', 1)))
         self.phases, self.dir = ref(s['phases']), ref(s['dir'])
         self.saved = list(s['saved'])
         self.wallBefore, self.cpuBefore = s['wallSeconds'], s['cpuSeconds']

@@ -56,6 +56,13 @@ class BoxTest(Cyclic, Experiment):
         self.target = None     # the cycles done when the load() under way ends
         Experiment.__init__(self, parameters, **params)
 
+    def savedParams(self, values, units):
+        """States saved before 2026-12 (units 1) had vtk a flag (frames at the graded cycles): now a frame every cycle
+        or none."""
+        if units < 2:
+            values['vtk'] = 1.0 if values['vtk'] else 0.0
+        return values
+
     def pieces(self):
         return Experiment.pieces(self) + [self.rig, self.recorder, self.jumper]
 

@@ -215,6 +215,13 @@ class Oedometer(Cyclic, Experiment):
             self._writeTiming()
         return s
 
+    def savedParams(self, values, units):
+        """States saved before 2026-12 (units 1) gave saveEvery and vtk in seconds of loading: f of them a cycle."""
+        if units < 2:
+            for k in ('saveEvery', 'vtk'):
+                values[k] = values[k] * values['f']
+        return values
+
     def rebuildHint(self, path):
         return 'Oedometer.rebuild(%r) writes them' % path
 
