@@ -53,3 +53,50 @@ def test_a_cycles_inertial_numbers_largest_and_median_leave_out_the_undefined():
     assert quasistatic.cycleStats([1e-5, float('nan'), 3e-5, 2e-5, None]) == (3e-5, 2e-5)
     big, median = quasistatic.cycleStats([float('nan')])
     assert math.isnan(big) and math.isnan(median)
+
+
+def test_the_step_choice_puts_the_last_cycle_at_its_bounds_grows_at_most_twice_and_falls_back_when_broken():
+    """The paper's step 1e-6 s, I <= 1e-3, ratio >= 10, cycles of 0.1 s with abrasion every 100 steps: at most
+    min(0.1 / 1000, 0.1 / 100) = 1e-4 s; the first cycle at 4e-6 s. I ~ dt and ratio ~ 1 / dt, aimed at 0.7 of the
+    bounds: I = 2e-4, ratio 100 allow 3.5 and 7 times the step, the growth 2: 8e-6 s; I = 6e-4, ratio 30 allow
+    0.7 / 0.6 and 2.1: 8e-6 x 7 / 6; I = 1.2e-3 breaks the bound: the paper's step, the cycle marked; no measure
+    (unloaded): twice the step."""
+    c = quasistatic.StepChoice(1e-6, 1e-3, 10.0, 0.1, 100)
+    assert c.largest == pytest.approx(1e-4) and c.step == pytest.approx(4e-6)
+    assert c.cycleClosed(2e-4, 100.0) == pytest.approx(8e-6)
+    assert c.cycleClosed(6e-4, 30.0) == pytest.approx(8e-6 * 0.7 / 0.6)
+    assert c.cycleClosed(1.2e-3, 30.0) == pytest.approx(1e-6)
+    assert c.cycleClosed(float('nan'), float('nan')) == pytest.approx(2e-6)
+    assert c.cycleClosed(5e-4, 8.0) == pytest.approx(1e-6)   # the ratio below 10: broken too
+    assert c.met == [1, 1, 0, 1, 0]
+    for _ in range(20):
+        c.cycleClosed(1e-9, 1e9)   # far inside the bounds: the growth, then the cap
+    assert c.step == pytest.approx(1e-4)
+    c.loaded = {7: 3e-6}
+    back = quasistatic.StepChoice.fromState(__import__('json').loads(__import__('json').dumps(c.state())))
+    assert back.state() == c.state() and back.loaded == {7: 3e-6}
+
+
+def test_a_small_box_under_the_quasi_static_option_keeps_the_bound_or_says_so(tmp_path):
+    """The small soft box at 10 Hz (I about 5e-4 at the paper's step) with quasiStatic 1e-3: the first cycle at 4
+    times the paper's step, then each cycle's step the option's; cycles.csv says which cycles kept the bounds,
+    those that did not were followed by a cycle at the paper's step, and each kept cycle had I <= 1e-3."""
+    import pandas as pd
+    from ballast.experiments.box import BoxTest
+    small = dict(boxLength=0.3, boxWidth=0.12, bedDepth=0.1, layers=2, sleeperWidth=0.1, sleeperHeight=0.05,
+                 sleeperMass=5, dMin=0.02, dMax=0.03, young=3e9, prepYoung=3e8, seatLoad=300, peakLoad=4000, crush=False,
+                 strength=1.5e10, f=10, cycles=5, progress=60)
+    test = BoxTest(results=str(tmp_path), runId='qs', quasiStatic=1e-3, **small)
+    test.run()
+    cyc = pd.read_csv(str(tmp_path / 'qs' / 'cycles.csv'))
+    paper = test.p.startTimeStep()
+    assert cyc.dt[0] == pytest.approx(4 * paper, rel=1e-6)
+    assert set(cyc.quasiStaticMet) <= {0, 1}
+    kept = cyc.quasiStaticMet == 1
+    assert ((cyc.inertialMax[kept] <= 1e-3) & ~(cyc.responseRatio[kept] < 10)).all()
+    assert ((cyc.inertialMax[~kept] > 1e-3) | (cyc.responseRatio[~kept] < 10)).all()
+    for k in range(len(cyc) - 1):   # the step of cycle k + 1 is the choice made at cycle k's end
+        if cyc.quasiStaticMet[k] == 0:
+            assert cyc.dt[k + 1] == pytest.approx(paper, rel=1e-6)
+        else:
+            assert paper * (1 - 1e-9) <= cyc.dt[k + 1] <= 2 * cyc.dt[k] * (1 + 1e-6)

@@ -38,7 +38,7 @@ from ..names import runDirName
 from ..engineparams import CRUSH
 from ..params import ParamError, requireWritableDir
 from ..runfiles import killedRunState, runStatus, syncDir
-from . import chain, timestep
+from . import chain, quasistatic, timestep
 from .phases import Phases
 from .rundir import RunDirectory, StateFileError, checkStateFile, processAlive
 
@@ -210,22 +210,41 @@ class Experiment:
         """How to get a run's outputs back from its state at `path` (finishRun's message)."""
         return '%s.reopen(%r) gives the run back' % (type(self).__name__, path)
 
-    def startTimeStep(self, loaded=None):
+    def startTimeStep(self, loaded=None, period=None):
         """The time-step options at the start of loading (experiments.timestep): the stiffness stepper, or density
         scaling: every grain its own P-wave step densityStep / dtSafety, and the body that loads the grains
         (`loaded`: a plate, a sleeper; None: kinematic platens) from the stiffness K of its contacts: a body of mass
         M on springs K is stable below 2 sqrt(M / K); taken as sqrt(M / (LOADED_STIFFNESS_MARGIN K)), as more
-        contacts form under it when grains crush (None if it is not dynamic or touches nothing)."""
+        contacts form under it when grains crush (None if it is not dynamic or touches nothing). With quasiStatic
+        (a cyclic experiment, load cycles of `period` [s]) the step is the quasi-static option's (quasistatic.StepChoice),
+        chosen again at every cycle's end."""
         p = self.p
         if p['timeStep'] == 'stiffness':
             timestep.startStiffnessStep(p['dtSafety'])
-        if p['densityStep'] > 0:
+        step = p['densityStep']
+        if p.get('quasiStatic', 0) > 0:
+            self.stepChoice = quasistatic.StepChoice(p.startTimeStep(), p['quasiStatic'], p['quasiStaticRatio'], period,
+                                                     p['abrasionPeriod'])
+            self.adopt()
+            step = self.stepChoice.step
+        if step > 0:
             own = {}
             if loaded is not None:
                 b = O.bodies[loaded]
                 K = sum(i.phys.kn for i in b.intrs() if i.isReal)
                 own[loaded] = math.sqrt(b.state.mass / (LOADED_STIFFNESS_MARGIN * K)) if b.dynamic and K > 0 else None
-            timestep.startDensityScaling(self, p['densityStep'], p.scaledPWaveStep(), own)
+            if self.stepChoice is not None:
+                self.stepChoice.loaded = own
+            timestep.startDensityScaling(self, step, step / p['dtSafety'], own)
+
+    stepChoice = None   # the quasi-static option's piece (quasiStatic > 0)
+
+    def ownStep(self):
+        """The grains' own P-wave step [s] under density scaling now (0: none): the quasi-static option's, else
+        densityStep / dtSafety."""
+        if self.stepChoice is not None:
+            return self.stepChoice.step / self.p['dtSafety']
+        return self.p.scaledPWaveStep()
 
     def savedParams(self, values, units):
         """The parameters of a saved state in today's units (units: PARAM_UNITS when it was saved; subclasses convert

@@ -28,9 +28,11 @@ inertialMedian -      its median over the cycle
 responseRatio  -      the load's period over the bed's slowest response time (:mod:`.quasistatic`)
 jumped         -      with cycle jumping: the cycles jumped before this row
 settlementJumped m    with cycle jumping: the settlement extrapolated over those cycles (settlement laws)
+quasiStaticMet -      with quasiStatic: 1 if the cycle kept the option's bounds, 0 if it broke one
 ============== ====== ===================================================================================
 
 then each experiment's own (the oedometer: Bg; the box: settlementPeak, work, tilt)."""
+import math
 import os
 import re
 
@@ -41,7 +43,7 @@ from yade import O
 from .. import runtime
 from ..runfiles import writeAtomic
 from ..settlementlaws import bedChanged, settlementJumped
-from . import chain, grains
+from . import chain, grains, timestep
 from .cyclejump import CycleJumper
 
 COLUMNS = ('cycle', 't', 'settlement', 'resilient', 'crushes', 'abrasions', 'nCrushed', 'nAbraded', 'maxDamage',
@@ -61,13 +63,19 @@ def changed(frame):
     return bedChanged(frame.crushes.to_numpy(), frame.abrasions.to_numpy())
 
 
-def table(rows, own=(), jumper=None):
+def table(rows, own=(), jumper=None, choice=None):
     """cycles.csv as a DataFrame: rows (dicts with COLUMNS and the experiment's `own` columns) in the shared order,
-    with cycle jumping (a jumper) the cycles jumped before each row and the settlement extrapolated over them."""
+    with cycle jumping (a jumper) the cycles jumped before each row and the settlement extrapolated over them, with
+    the quasi-static option (its StepChoice) whether each cycle kept its bounds (quasiStaticMet, 1 or 0)."""
     frame = pd.DataFrame(list(rows), columns=list(COLUMNS) + list(own))
+    at = len(COLUMNS)
     if jumper is not None:
-        frame.insert(len(COLUMNS), 'jumped', frame.cycle.astype(int) - np.arange(1, len(frame) + 1))
-        frame.insert(len(COLUMNS) + 1, 'settlementJumped', settlementJumped(frame.cycle, frame.settlement, changed(frame)))
+        frame.insert(at, 'jumped', frame.cycle.astype(int) - np.arange(1, len(frame) + 1))
+        frame.insert(at + 1, 'settlementJumped', settlementJumped(frame.cycle, frame.settlement, changed(frame)))
+        at += 2
+    if choice is not None:
+        met = list(choice.met[-len(frame):]) if len(frame) else []
+        frame.insert(at, 'quasiStaticMet', [math.nan] * (len(frame) - len(met)) + met)
     return frame
 
 
@@ -122,10 +130,13 @@ class Cyclic:
     def addSaver(self):
         O.engines = [runtime.callback(self, 'checkpoint', iterPeriod=1, dead=True, label=self.SAVER)] + list(O.engines)
 
-    def cycleDone(self, cycle, settlement, changed):
+    def cycleDone(self, cycle, settlement, changed, inertialMax=math.nan, responseRatio=math.nan):
         """The experiment's call at the end of each simulated cycle `cycle` (numbered with the jumped ones), with its
-        permanent settlement [m] and whether a grain crushed or abraded in it: the checkpoint after every saveEvery
-        cycles and, with jumping, the jumper's reading of the cycle; both act at the start of the next step."""
+        permanent settlement [m], whether a grain crushed or abraded in it and its quasi-static measures: the
+        quasi-static option's next step, the checkpoint after every saveEvery cycles and, with jumping, the jumper's
+        reading of the cycle; the last two act at the start of the next step."""
+        if self.stepChoice is not None:
+            self.chooseStep(cycle, inertialMax, responseRatio)
         every = self.p['saveEvery']
         if every and wholeCycles(every) and cycle % every == 0:
             if chain.engine(self.SAVER) is None:   # reopened with saveEvery from a run that had none
@@ -133,6 +144,18 @@ class Cyclic:
             chain.engine(self.SAVER).dead = False
         if self.jumper is not None:
             self.cycleClosed(cycle, settlement, changed)
+
+    def chooseStep(self, cycle, inertialMax, responseRatio):
+        """quasiStatic: the next cycle's density step from this one's measures (quasistatic.StepChoice); a cycle that
+        broke a bound says so, and the next runs at the paper's step."""
+        choice, before = self.stepChoice, self.stepChoice.step
+        step = choice.cycleClosed(inertialMax, responseRatio)
+        if not choice.met[-1]:
+            self.say('cycle %d broke the quasi-static bounds (largest inertial number %.3g, bound %g; response ratio '
+                     '%.3g, at least %g): the next cycle at the paper\'s step %.3g s' % (
+                         cycle, inertialMax, choice.bound, responseRatio, choice.ratioMin, step))
+        if step != before:
+            timestep.changeDensityStep(step, step / self.p['dtSafety'], choice.loaded)
 
     def checkpoint(self):
         """The saver's call at the start of a step: a state to go on from, exactly where the run was; after a cycle

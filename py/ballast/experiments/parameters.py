@@ -90,6 +90,20 @@ INTEGRATION = {
                                             'with timeStep pwave'),
 }
 
+# the quasi-static option of the cyclic experiments (experiments.quasistatic, docs/performance.md)
+QS_START_FACTOR = 4.0   # [-] its first cycle's step over the paper's
+QUASI_STATIC = {
+    'quasiStatic': Param(0.0, '-', 'the quasi-static option: density scaling whose step is chosen cycle by cycle so '
+                         'that the bed\'s largest inertial number in a cycle stays below this bound and the load\'s '
+                         'period over the bed\'s response time above quasiStaticRatio (the first cycle at %g times the '
+                         'paper\'s step; a cycle that breaks a bound is marked in cycles.csv and the next runs at the '
+                         'paper\'s step; docs/performance.md); 1e-3 is the quasi-static regime (GDR MiDi 2004); '
+                         '0 = off' % QS_START_FACTOR, between(0, 0.1, closedHi=True), 'a number in [0, 0.1]'),
+    'quasiStaticRatio': Param(10.0, '-', 'with quasiStatic: the smallest ratio of the load\'s period to the bed\'s '
+                              'slowest response time a cycle may have', between(1, 1e6, closedHi=True),
+                              'a number in [1, 1e6]'),
+}
+
 # crushing (section 2) and abrasion (section 3): the engines' declarations with the experiments' defaults
 ENGINES = {
     'crush': Param(True, '-', 'BallastCrushEngine on', boolean, '0 or 1', flag),
@@ -186,7 +200,10 @@ class ExperimentParameters(Parameters):
         return self['dtSafety'] * self.smallestDiameter() / 2 * math.sqrt(self['density'] / self['young'])
 
     def loadingTimeStep(self):
-        """The loading time step [s] at the start: densityStep with density scaling, else startTimeStep()."""
+        """The loading time step [s] at the start: densityStep with density scaling, the quasi-static option's first
+        step (QS_START_FACTOR times the paper's), else startTimeStep()."""
+        if self.get('quasiStatic', 0) > 0:
+            return QS_START_FACTOR * self.startTimeStep()
         return self['densityStep'] or self.startTimeStep()
 
     def scaledPWaveStep(self):
@@ -218,8 +235,12 @@ class ExperimentParameters(Parameters):
                      % self['law'])
 
     def checkDensityStep(self):
-        """densityStep 0, or at least the paper's step (startTimeStep) with timeStep pwave."""
+        """densityStep 0, or at least the paper's step (startTimeStep) with timeStep pwave; the quasi-static option
+        chooses the step itself: with neither."""
         step, paper, timeStep = self['densityStep'], self.startTimeStep(), self['timeStep']
+        if self.get('quasiStatic', 0) > 0 and (step > 0 or timeStep != 'pwave'):
+            self.bad('quasiStatic', "chooses the density step itself: give densityStep 0 and timeStep 'pwave' (got %g s, "
+                                    '%r)' % (step, timeStep))
         if step > 0 and timeStep != 'pwave':
             self.bad('densityStep', "%g s with timeStep = %r: density scaling sets the step itself; give timeStep "
                                     "'pwave' or densityStep 0" % (step, timeStep))

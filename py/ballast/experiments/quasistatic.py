@@ -14,28 +14,33 @@ import math
 
 import numpy as np
 
-from .. import _ballast, harvest
+from .. import _ballast, harvest, runtime
 from ..densityscaling import scaledDensity
+from .parameters import QS_START_FACTOR as START_FACTOR   # the first cycle's step over the paper's
 
 LOADED = 0.01   # [-] I is reported once the grains carry this share of the peak load (p -> 0 looks inertial)
 INERTIAL_BOUND = 1e-3   # [-] the quasi-static regime's inertial number (GDR MiDi 2004): above it a run warns
 
 
-def inertialNumber(p, speed, height, force, area, peak):
+def inertialNumber(p, speed, height, force, area, peak, ownStep=None):
     """The bed's inertial number [-] under a loading body moving at `speed` [m/s] over a bed `height` [m] high,
     the grains carrying `force` [N] over `area` [m^2]; NaN while they carry less than LOADED of the `peak` load
-    [N] (the seating), or without grains. p: the run's parameters (density, young, the density step)."""
+    [N] (the seating), or without grains. p: the run's parameters (density, young); ownStep [s]: the grains' own
+    step under density scaling now (default the parameters')."""
     radii = harvest.grains().radii
     if not (force >= LOADED * peak and height > 0 and len(radii)):
         return math.nan
-    rho = scaledDensity(radii, p['density'], p['young'], p.scaledPWaveStep())
+    own = p.scaledPWaveStep() if ownStep is None else ownStep
+    rho = scaledDensity(radii, p['density'], p['young'], own)
     return float(_ballast.inertialNumber(speed / height, 2 * float(np.mean(radii)), rho, force / area))
 
 
-def bedMass(p, masses):
-    """The grains' mass [kg] as their inertia sees it: their masses [kg] times the density scaling's factor."""
+def bedMass(p, masses, ownStep=None):
+    """The grains' mass [kg] as their inertia sees it: their masses [kg] times the density scaling's factor (ownStep
+    as in inertialNumber)."""
     radii = harvest.grains().radii
-    return float(np.sum(masses)) * scaledDensity(radii, p['density'], p['young'], p.scaledPWaveStep()) / p['density']
+    own = p.scaledPWaveStep() if ownStep is None else ownStep
+    return float(np.sum(masses)) * scaledDensity(radii, p['density'], p['young'], own) / p['density']
 
 
 def responseRatio(period, mass, loadRange, resilient):
@@ -50,3 +55,54 @@ def cycleStats(values):
     """(largest, median) of a cycle's inertial numbers, NaN where none was defined."""
     v = np.asarray([x for x in values if x is not None and math.isfinite(x)], dtype=float)
     return (float(v.max()), float(np.median(v))) if v.size else (math.nan, math.nan)
+
+
+# ---------------------------------------------------------------------------- the option: quasiStatic
+GROWTH = 2.0         # [-] a cycle's step at most this many times the last one's
+SAFETY = 0.7         # [-] the next step aims at SAFETY of the bounds: the measures of one cycle scatter
+MIN_STEPS = 1000     # [steps] a load cycle is resolved by at least this many steps
+
+
+@runtime.persistent('QuasiStaticStep')
+class StepChoice:
+    """The quasi-static option (quasiStatic I_MAX): the density step of each load cycle chosen from the last
+    cycle's measures. Density scaling by a step dt makes the grains' inertia grow as dt^2, so the inertial number
+    grows as dt and the response ratio falls as 1/dt: the next step is the one that puts the last cycle's largest I
+    at SAFETY I_MAX and its ratio at ratioMin / SAFETY, at most GROWTH times the last step, at most a cycle over
+    MIN_STEPS (and abrasionPeriod steps within a cycle), at least the paper's step. A cycle that broke a bound (an
+    avalanche, a grain flying) is marked and the next one runs at the paper's step. The first cycle runs at
+    START_FACTOR times the paper's step: its measures give the second's."""
+
+    def __init__(self, paper=0.0, bound=0.0, ratioMin=0.0, period=0.0, abrasionPeriod=1):
+        self.paper, self.bound, self.ratioMin, self.period = paper, bound, ratioMin, period
+        self.largest = min(period / MIN_STEPS, period / max(abrasionPeriod, 1)) if period else paper
+        self.step = max(paper, min(START_FACTOR * paper, self.largest))
+        self.met = []        # per closed cycle: 1 if it kept both bounds, 0 if it broke one
+        self.loaded = {}     # {body id: its own critical step [s] or None}: the loading body's scaling
+
+    def state(self):
+        return {k: getattr(self, k) for k in ('paper', 'bound', 'ratioMin', 'period', 'largest', 'step', 'met',
+                                              'loaded')}
+
+    @classmethod
+    def fromState(cls, s, ref=None):
+        obj = runtime.fromAttributes(cls, s)
+        obj.loaded = {int(k): v for k, v in obj.loaded.items()}   # JSON keys are text
+        return obj
+
+    def cycleClosed(self, inertialMax, ratio):
+        """The closed cycle's largest inertial number and response ratio: whether it kept the bounds, and the
+        next cycle's step [s]."""
+        broken = (math.isfinite(inertialMax) and inertialMax > self.bound) or (
+            math.isfinite(ratio) and ratio < self.ratioMin)
+        self.met.append(0 if broken else 1)
+        if broken:
+            self.step = self.paper
+            return self.step
+        limits = [GROWTH]
+        if math.isfinite(inertialMax) and inertialMax > 0:
+            limits.append(SAFETY * self.bound / inertialMax)
+        if math.isfinite(ratio):
+            limits.append(SAFETY * ratio / self.ratioMin)
+        self.step = max(self.paper, min(self.step * min(limits), self.largest))
+        return self.step

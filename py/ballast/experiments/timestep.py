@@ -39,6 +39,20 @@ def startDensityScaling(exp, step, ownStep, others):
         O.bodies[bid].state.densityScaling = 1.0 if own is None else float(_ballast.densityScaling(own, ownStep))
 
 
+def changeDensityStep(step, ownStep, others):
+    """Density scaling on already: the step [s] from the next step on, every grain's own P-wave step ownStep [s]
+    (the factors set afresh from the grains' own densities), `others` as startDensityScaling, and the engines'
+    scaledPWaveStep (the grains they change later)."""
+    O.dt = step
+    scaleDensities(harvest.grains().ids, ownStep)
+    for bid, own in others.items():
+        O.bodies[int(bid)].state.densityScaling = 1.0 if own is None else float(_ballast.densityScaling(own, ownStep))
+    for label in ('crush', 'abrasion'):
+        e = engine(label)
+        if e is not None:
+            e.scaledPWaveStep = ownStep
+
+
 def startStiffnessStep(safety):
     """timeStep 'stiffness': YADE's GlobalStiffnessTimeStepper with the safety factor, every STIFFNESS_UPDATE
     steps, just before NewtonIntegrator; the current O.dt until its first update."""

@@ -64,7 +64,7 @@ class BoxTest(Cyclic, Experiment):
         return values
 
     def pieces(self):
-        return Experiment.pieces(self) + [self.rig, self.recorder, self.jumper]
+        return Experiment.pieces(self) + [self.rig, self.recorder, self.jumper, self.stepChoice]
 
     # ------------------------------------------------------------------ the experiment
     def prepare(self):
@@ -130,7 +130,7 @@ class BoxTest(Cyclic, Experiment):
         self.startCycles(rec.t0, history.period)
         plot.reset()
         plot.plots = {'settlement': ('F',)}   # YADE's live plot: the load against the settlement
-        self.startTimeStep(rec.sleeper)
+        self.startTimeStep(rec.sleeper, history.period)
         x, r, m = grains.arrays()
         self.initial = {'massInitial': float(np.sum(m)), 'nGrainsInitial': len(r), 'diameters': grains.sieve()[0].tolist(),
                         'masses': m.tolist(), 'zBase': rec.z0, 'ids': grains.kind().ids().tolist()}
@@ -145,7 +145,7 @@ class BoxTest(Cyclic, Experiment):
         p = self.p
         if getattr(self, '_peak', None) is None:   # the load history is read once a process (loadFile: a CSV)
             self._peak = p.history().peak
-        k = self.recorder.sample(p, p['sleeperWidth'] * p.sleeperLength(), self._peak)
+        k = self.recorder.sample(p, p['sleeperWidth'] * p.sleeperLength(), self._peak, self.ownStep())
         row = self.recorder.samples[-1]
         if not self.onFloor and self.recorder.underside() < self.p['dMin'] / 2:
             # YADE has no contact between a box and a wall: the sleeper would fall through the floor
@@ -159,7 +159,8 @@ class BoxTest(Cyclic, Experiment):
             if outputs.gradedCycle(k):
                 self.grade(k)
             row = dict(zip(Recorder.CYCLE_COLUMNS, self.recorder.cycles[-1]))
-            self.cycleDone(k, row['settlement'], bool(bedChanged(row['crushes'], row['abrasions'])))
+            self.cycleDone(k, row['settlement'], bool(bedChanged(row['crushes'], row['abrasions'])), row['inertialMax'],
+                           row['responseRatio'])
 
     def jumped(self, cycles):
         self.recorder.jump(cycles)
@@ -266,7 +267,7 @@ class BoxTest(Cyclic, Experiment):
     # ------------------------------------------------------------------ saving
     def state(self):
         return dict(self.baseState(), rig=runtime.ref(self.rig), recorder=runtime.ref(self.recorder),
-                    jumper=runtime.ref(self.jumper),
+                    jumper=runtime.ref(self.jumper), stepChoice=runtime.ref(self.stepChoice),
                     bedTop=self.bedTop, porosity=self.porosity, nEscaped=self.nEscaped, nCrib=self.nCrib,
                     bedFile=self.bedFile, onFloor=self.onFloor, target=self.target,
                     initial=self.initial,
@@ -278,6 +279,7 @@ class BoxTest(Cyclic, Experiment):
         exp.setBaseState(s, ref)
         exp.rig, exp.recorder = ref(s['rig']), ref(s['recorder'])
         exp.jumper = ref(s['jumper']) if s.get('jumper') is not None else None   # none before cycle jumping existed
+        exp.stepChoice = ref(s['stepChoice']) if s.get('stepChoice') is not None else None   # none before 2026-12
         for k in ('bedTop', 'porosity', 'nEscaped', 'bedFile', 'initial', 'gradings', 'frames'):
             setattr(exp, k, s[k])
         exp.nCrib = s.get('nCrib', 0)   # states saved before crib ballast existed have none

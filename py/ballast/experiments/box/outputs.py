@@ -84,7 +84,8 @@ OWN_COLUMNS = ('settlementPeak', 'work', 'tilt')   # cycles.csv beyond the share
 def cycleTable(exp):
     """cycles.csv as a DataFrame (the shared schema, experiments.cyclic, then OWN_COLUMNS)."""
     rec = exp.recorder
-    return cyclic.table([dict(zip(rec.CYCLE_COLUMNS, row)) for row in rec.cycles], OWN_COLUMNS, exp.jumper)
+    return cyclic.table([dict(zip(rec.CYCLE_COLUMNS, row)) for row in rec.cycles], OWN_COLUMNS, exp.jumper,
+                        exp.stepChoice)
 
 
 def summary(exp):

@@ -11,7 +11,7 @@ import os
 from ...params import NUMBER_NONNEGATIVE, NUMBER_POSITIVE, Param, anyText, between, boolean, flag, intBetween, nonNegative, \
     positive, positiveInt, text
 from ..parameters import (CONTACT, CYCLE_JUMP, ENGINES, GRAINS, INTEGRATION, PHI, PREPARATION, RUN, SEED, STEEL,
-                          CYCLE_OUTPUTS, ExperimentParameters, take)
+                          CYCLE_OUTPUTS, QUASI_STATIC, ExperimentParameters, take)
 from .loadhistory import LoadHistory, LoadHistoryError
 
 OWNER = 'BoxTest'
@@ -77,6 +77,7 @@ PARAMS = {
     **RUN,
     **CYCLE_JUMP,
     **CYCLE_OUTPUTS,
+    **QUASI_STATIC,
 }
 
 # What decides a bed: these parameters and the version of its preparation (bump it whenever bed.build changes:

@@ -77,31 +77,31 @@ class Recorder:
         for row in self.samples[self.start:]:
             row[1] += cycles
 
-    def inertialNumber(self, p, area, peak):
+    def inertialNumber(self, p, area, peak, ownStep=None):
         """The bed's inertial number under the sleeper now (experiments.quasistatic): its speed over the bed's depth
         under it, the grains' force on it over its footprint `area` [m^2], NaN below 1 % of the `peak` load [N]."""
         return quasistatic.inertialNumber(p, O.bodies[self.sleeper].state.vel[2], self.underside(), self.grainsForce(),
-                                          area, peak)
+                                          area, peak, ownStep)
 
-    def sample(self, p, area, peak):
+    def sample(self, p, area, peak, ownStep=None):
         """A row of samples.csv; returns the cycle it closed, or 0. p: the run's parameters; area [m^2] and peak
-        [N]: the sleeper's footprint and the peak load, for the inertial number."""
+        [N]: the sleeper's footprint and the peak load, ownStep [s] the grains' own step, for the inertial number."""
         counts = [sum(getattr(e, k) for e in O.engines if isinstance(e, kind)) for kind, k in
                   ((BallastCrushEngine, 'nCrushed'), (BallastAbrasionEngine, 'nAbraded'))]
         crush = [e for e in O.engines if isinstance(e, BallastCrushEngine)]
         ratio = max([e.maxCrushableRatio for e in crush], default=math.nan)   # at the engine's last check
         row = [O.time - self.t0, self.cycle(), self.applied(), self.grainsForce(), self.z0 - self.underside(),
-               self.tilt()] + counts + [ratio, self.inertialNumber(p, area, peak)]
+               self.tilt()] + counts + [ratio, self.inertialNumber(p, area, peak, ownStep)]
         self.samples.append(row)
         if self.start is None:
             self.start, self.cpu, self.iter0 = len(self.samples) - 1, time.process_time(), O.iter
         elif row[1] > self.samples[self.start][1]:   # a cycle ended at this sample: it opens the next one
-            self.closeCycle(len(self.samples) - 1, p)
+            self.closeCycle(len(self.samples) - 1, p, ownStep)
             self.samples, self.start = self.samples[-1:], 0
             return int(row[1])
         return 0
 
-    def closeCycle(self, end, p):
+    def closeCycle(self, end, p, ownStep=None):
         # rows of states saved before the inertial number have 9 entries
         rows = np.array([list(r) + [math.nan] * (10 - len(r)) for r in self.samples[self.start:end + 1]], dtype=float)
         F, s = rows[:, 2], rows[:, 4]
@@ -116,6 +116,6 @@ class Recorder:
                             O.iter - self.iter0 if self.iter0 is not None else math.nan,
                             *quasistatic.cycleStats(rows[:, 9]),
                             quasistatic.responseRatio(self.period, O.bodies[self.sleeper].state.mass +
-                                                      quasistatic.bedMass(p, grains.arrays()[2]),
+                                                      quasistatic.bedMass(p, grains.arrays()[2], ownStep),
                                                       float(np.max(F) - np.min(F)), float(np.max(s) - s[-1]))])
         self.cpu, self.iter0 = time.process_time(), O.iter

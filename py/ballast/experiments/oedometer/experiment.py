@@ -87,7 +87,8 @@ class Oedometer(Cyclic, Experiment):
         return self.rig.cylinder if self.rig is not None else None
 
     def pieces(self):
-        return Experiment.pieces(self) + [self.packing, self.loading, self.outputs, self.rig, self.jumper]
+        return Experiment.pieces(self) + [self.packing, self.loading, self.outputs, self.rig, self.jumper,
+                                          self.stepChoice]
 
     # ------------------------------------------------------------------ the experiment
     def checkOutputs(self):
@@ -166,7 +167,8 @@ class Oedometer(Cyclic, Experiment):
         if len(totals) == 1:
             totals.insert(0, (0, 0))
         crushed, abraded = zip(*totals)
-        self.cycleDone(rows[-1][0], rows[-1][2], bool(bedChanged(crushed, abraded, totals=True)[-1]))
+        last = tuple(rows[-1]) + (math.nan,) * (16 - len(rows[-1]))   # rows of older states lack the measures
+        self.cycleDone(rows[-1][0], rows[-1][2], bool(bedChanged(crushed, abraded, totals=True)[-1]), last[13], last[15])
 
     def stopCondition(self):
         """The load phase's end test (checked every 200 steps): the displacement load has reached Fmax, or
@@ -230,13 +232,13 @@ class Oedometer(Cyclic, Experiment):
         p = self.p
         self.loading.start(p, self.rig)
         self.addEngines(self.loading.t0)
-        self.startTimeStep(self.loading.plate)
+        self.startTimeStep(self.loading.plate, self.T)
         x, r, m = grains.arrays()
         d = grains.sieve()[0]   # the grading's sizes (grains.kind)
         self.initial = {'massInitial': float(np.sum(m)), 'nGrainsInitial': len(r),
                         'volumeGrains': float(np.sum(grains.volumes())), 'diameters': d.tolist(), 'masses': m.tolist()}
         self.startJumping()
-        self.probe = Probe(p, self.loading, self.rig, self.dir, self.initial, self.jumper)
+        self.probe = Probe(p, self.loading, self.rig, self.dir, self.initial, self.jumper, self.stepChoice)
         self.outputs.start(self.probe)
         self.readCycles()
         # containment at simulated times (the recorder's period): the same in every identical run
@@ -300,7 +302,8 @@ class Oedometer(Cyclic, Experiment):
         return dict(self.baseState(), packing=runtime.ref(self.packing), loading=runtime.ref(self.loading),
                     outputs=runtime.ref(self.outputs), rig=runtime.ref(self.rig), initial=self.initial,
                     maxProtrusion=self.maxProtrusion, nEscaped=self.nEscaped, stoppedBy=self.stoppedBy,
-                    jumper=runtime.ref(self.jumper), lastClosed=self.lastClosed)
+                    jumper=runtime.ref(self.jumper), lastClosed=self.lastClosed,
+                    stepChoice=runtime.ref(self.stepChoice))
 
     @classmethod
     def fromState(cls, s, ref):
@@ -310,6 +313,7 @@ class Oedometer(Cyclic, Experiment):
         exp.initial, exp.maxProtrusion, exp.nEscaped = s['initial'], s['maxProtrusion'], s['nEscaped']
         exp.stoppedBy = s.get('stoppedBy')  # states saved before the stop conditions: unknown
         exp.jumper = ref(s['jumper']) if s.get('jumper') is not None else None   # none before cycle jumping
+        exp.stepChoice = ref(s['stepChoice']) if s.get('stepChoice') is not None else None   # none before 2026-12
         rows = exp.outputs.cycleRows   # states saved before the closed cycle was kept: the last row's
         exp.lastClosed = s.get('lastClosed', rows[-1][0] if rows else 0)
         exp.probe = None
@@ -321,7 +325,7 @@ class Oedometer(Cyclic, Experiment):
         self.loading.bind(self.p)
         self.resumeDensityScaling()
         if self.initial is not None:
-            self.probe = Probe(self.p, self.loading, self.rig, self.dir, self.initial, self.jumper)
+            self.probe = Probe(self.p, self.loading, self.rig, self.dir, self.initial, self.jumper, self.stepChoice)
             self.outputs.bind(self.probe)
 
     def reopened(self):

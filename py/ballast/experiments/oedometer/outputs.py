@@ -139,7 +139,7 @@ class Outputs:
                 row[0], row[1], row[2], row[3], row[4] - prev[0], row[5] - prev[1], row[4], row[5], row[7], row[8],
                 row[9], row[10], row[11], row[12], row[13], row[14], row[15], row[6]))))
             prev = row[4:6]
-        return cyclic.table(rows, ('Bg',), self.exp.jumper)
+        return cyclic.table(rows, ('Bg',), self.exp.jumper, self.exp.stepChoice)
 
     def cycleEnd(self):
         """A row of cycles.csv (experiments.cyclic): the cycle just ended, the permanent settlement (delta at the
@@ -165,7 +165,8 @@ class Outputs:
         ratios = [row[5] for row in checks if len(row) > 5]
         inertialMax, inertialMedian = quasistatic.cycleStats([row[6] for row in checks if len(row) > 6])
         p = exp.p
-        mass = O.bodies[exp.loading.plate].state.mass + quasistatic.bedMass(p, grainKind().masses(grainKind().ids()))
+        mass = O.bodies[exp.loading.plate].state.mass + quasistatic.bedMass(p, grainKind().masses(grainKind().ids()),
+                                                                            exp.ownStep())
         cpu = time.process_time()
         self.cycleRows.append((k, t, settlement, deepest - settlement, crushed, abraded, grading.marsal(*exp.grading()),
                                exp.counter('crush', 'maxDamage'), max(ratios) if ratios else math.nan,

@@ -16,7 +16,7 @@ from ...geometry import frictPhysStiffness
 from ...params import NUMBER_NONNEGATIVE, NUMBER_POSITIVE, Param, anyText, between, boolean, choice, flag, intAtLeast, \
     nonNegative, positive, positiveInt, text
 from ..parameters import (CONTACT, CYCLE_JUMP, ENGINES, GRAINS, INTEGRATION, PREPARATION, RUN, SEED, STEEL,
-                          CYCLE_OUTPUTS, ExperimentParameters, take)
+                          CYCLE_OUTPUTS, QUASI_STATIC, ExperimentParameters, take)
 from .loadcurve import halfLoadTime, peakTime
 
 OWNER = 'Oedometer'
@@ -90,6 +90,7 @@ PARAMS = {
                     '0 or 1', flag),
     **CYCLE_JUMP,
     **CYCLE_OUTPUTS,
+    **QUASI_STATIC,
 }
 
 # What decides a packing: these parameters and the version of the preparation. Bump the version

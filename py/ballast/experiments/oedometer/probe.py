@@ -29,9 +29,15 @@ def counter(label, name):
 
 
 class Probe:
-    def __init__(self, p, loading, rig, runDir, initial, jumper=None):
+    def __init__(self, p, loading, rig, runDir, initial, jumper=None, stepChoice=None):
         self.p, self.loading, self.rig, self.dir, self.initial = p, loading, rig, runDir, initial
-        self.jumper = jumper
+        self.jumper, self.stepChoice = jumper, stepChoice
+
+    def ownStep(self):
+        """The grains' own P-wave step [s] under density scaling now (Experiment.ownStep)."""
+        if self.stepChoice is not None:
+            return self.stepChoice.step / self.p['dtSafety']
+        return self.p.scaledPWaveStep()
 
     def cyclesJumped(self):
         """Cycles advanced by cycle jumping, not simulated."""
@@ -76,4 +82,5 @@ class Probe:
         grains' force on the plate over the cylinder's section; NaN while the grains carry less than LOADED
         Fmax (the seating, where p -> 0 makes any motion look inertial)."""
         return quasistatic.inertialNumber(self.p, O.bodies[self.loading.plate].state.vel[2], self.loading.top(),
-                                          self.loading.force(), math.pi * self.cylinder.Rin ** 2, self.p['Fmax'])
+                                          self.loading.force(), math.pi * self.cylinder.Rin ** 2, self.p['Fmax'],
+                                          self.ownStep())
