@@ -56,3 +56,16 @@ def test_a_cycle_that_crushed_or_abraded_changed_the_bed():
 
 def test_whole_cycles_checkpoint_after_a_cycle_closes_fractions_within():
     assert cyclic.wholeCycles(2) and cyclic.wholeCycles(50.0) and not cyclic.wholeCycles(0.45)
+
+
+def test_each_cycle_says_whether_it_kept_the_quasi_static_bounds_in_its_own_row():
+    """cycles.csv is written as each cycle closes, before the option has read it: the rows read so far get their
+    mark, the last one NaN until it is read; never a mark in another cycle's row."""
+    class Choice:
+        met = [0, 1]
+    frame = cyclic.table(rows([1, 2, 3]), ('tilt',), None, Choice())
+    assert list(frame.columns) == list(cyclic.COLUMNS) + ['quasiStaticMet', 'tilt']
+    assert list(frame.quasiStaticMet[:2]) == [0, 1] and math.isnan(frame.quasiStaticMet[2])
+    Choice.met = [0, 1, 1]
+    assert list(cyclic.table(rows([1, 2, 3]), ('tilt',), None, Choice()).quasiStaticMet) == [0, 1, 1]
+

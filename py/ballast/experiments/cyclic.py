@@ -73,9 +73,9 @@ def table(rows, own=(), jumper=None, choice=None):
         frame.insert(at, 'jumped', frame.cycle.astype(int) - np.arange(1, len(frame) + 1))
         frame.insert(at + 1, 'settlementJumped', settlementJumped(frame.cycle, frame.settlement, changed(frame)))
         at += 2
-    if choice is not None:
-        met = list(choice.met[-len(frame):]) if len(frame) else []
-        frame.insert(at, 'quasiStaticMet', [math.nan] * (len(frame) - len(met)) + met)
+    if choice is not None:   # met[k]: the k-th simulated cycle; the last row's may not be read yet (NaN)
+        met = list(choice.met[:len(frame)])
+        frame.insert(at, 'quasiStaticMet', met + [math.nan] * (len(frame) - len(met)))
     return frame
 
 
