@@ -242,9 +242,7 @@ class Experiment:
     def ownStep(self):
         """The grains' own P-wave step [s] under density scaling now (0: none): the quasi-static option's, else
         densityStep / dtSafety."""
-        if self.stepChoice is not None:
-            return self.stepChoice.step / self.p['dtSafety']
-        return self.p.scaledPWaveStep()
+        return quasistatic.ownStep(self.p, self.stepChoice)
 
     def savedParams(self, values, units):
         """The parameters of a saved state in today's units (units: PARAM_UNITS when it was saved; subclasses convert

@@ -51,6 +51,12 @@ def responseRatio(period, mass, loadRange, resilient):
     return period / (2 * math.pi * math.sqrt(mass * resilient / loadRange))
 
 
+def ownStep(p, choice):
+    """The grains' own P-wave step [s] under density scaling now: the quasi-static option's (choice, a StepChoice),
+    else densityStep / dtSafety (0: none)."""
+    return choice.step / p['dtSafety'] if choice is not None else p.scaledPWaveStep()
+
+
 def cycleStats(values):
     """(largest, median) of a cycle's inertial numbers, NaN where none was defined."""
     v = np.asarray([x for x in values if x is not None and math.isfinite(x)], dtype=float)

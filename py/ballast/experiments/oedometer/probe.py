@@ -35,9 +35,7 @@ class Probe:
 
     def ownStep(self):
         """The grains' own P-wave step [s] under density scaling now (Experiment.ownStep)."""
-        if self.stepChoice is not None:
-            return self.stepChoice.step / self.p['dtSafety']
-        return self.p.scaledPWaveStep()
+        return quasistatic.ownStep(self.p, self.stepChoice)
 
     def cyclesJumped(self):
         """Cycles advanced by cycle jumping, not simulated."""
