@@ -20,6 +20,7 @@ namespace binding {
 	void registerTypes();
 	void registerDensityScaling();
 	void registerInertialNumber();
+	void registerMembrane();
 }  // namespace binding
 }  // namespace ballast
 
@@ -44,4 +45,5 @@ BOOST_PYTHON_MODULE(_ballast)
 	registerTypes();
 	registerDensityScaling();
 	registerInertialNumber();
+	registerMembrane();
 }
