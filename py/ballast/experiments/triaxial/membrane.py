@@ -1,0 +1,69 @@
+"""The triaxial cell's membrane in a YADE scene (docs/triaxial.md, "The membrane"): every `period` steps the load of
+the cell pressure on the specimen's outermost grains is worked out in C++ (``_ballast.membraneLoad``: rays cast
+radially through cells of about `cell` [m] between the platens, gaps deeper than `depth` [m] bridged) and set as
+each grain's permanent force (``O.forces.setPermF``), which YADE then applies at every step without Python. The
+specimen's volume and lateral area are those the membrane encloses. The grains are the scene's grain kind's."""
+import math
+
+import numpy as np
+from yade import O, Vector3
+
+from ... import _ballast, runtime
+from .. import grains
+
+ZERO = Vector3(0, 0, 0)
+
+
+@runtime.persistent('TriaxialMembrane')
+class Membrane:
+    """The membrane between the faces of the platens `bottom` and `top` (body ids of YADE walls normal to z), around
+    the z axis, under the pressure `pressure` [Pa]; cells of about `cell` [m], gaps deeper than `depth` [m] spanned.
+    After each update: loaded (the grain ids it presses), area [m^2], volume [m^3], bridged and empty cells."""
+
+    def __init__(self, bottom=None, top=None, pressure=0.0, cell=0.01, depth=0.005):
+        self.bottom, self.top, self.pressure, self.cell, self.depth = bottom, top, pressure, cell, depth
+        self.loaded = []
+        self.area = self.volume = math.nan
+        self.bridged = self.empty = 0
+
+    def state(self):
+        return {k: getattr(self, k) for k in ('bottom', 'top', 'pressure', 'cell', 'depth', 'loaded', 'area', 'volume',
+                                               'bridged', 'empty')}
+
+    @classmethod
+    def fromState(cls, s, ref=None):
+        return runtime.fromAttributes(cls, s)
+
+    def height(self):
+        """The distance between the platens' faces [m]."""
+        return O.bodies[self.top].state.pos[2] - O.bodies[self.bottom].state.pos[2]
+
+    def update(self):
+        """The pressure's load worked out for the grains as they are and set as their permanent forces; the grains
+        it left since the last update get none."""
+        kind = grains.kind()
+        ids = kind.ids()
+        x, r = kind.centres(ids), kind.radii(ids)
+        z0, z1 = O.bodies[self.bottom].state.pos[2], O.bodies[self.top].state.pos[2]
+        reach = float(np.max(np.hypot(x[:, 0], x[:, 1]) + r)) if len(r) else self.cell
+        out = _ballast.membraneLoad(x, r, self.pressure, 0.0, 0.0, z0, z1,
+                                    max(3, int(round(2 * math.pi * reach / self.cell))),
+                                    max(1, int(round((z1 - z0) / self.cell))), self.depth)
+        force = out['force']
+        carried = np.flatnonzero(force[:, 0] != 0.0)   # a carried cell always has a horizontal force
+        now = ids[carried].tolist()
+        for i in set(self.loaded) - set(now):
+            if i < len(O.bodies) and O.bodies[i] is not None:
+                O.forces.setPermF(i, ZERO)
+        for k, i in zip(carried.tolist(), now):
+            O.forces.setPermF(i, Vector3(*force[k]))
+        self.loaded = now
+        self.area, self.volume = float(out['area']), float(out['volume'])
+        self.bridged, self.empty = int(out['bridged']), int(out['empty'])
+
+    def release(self):
+        """No pressure on any grain any more (the membrane taken off)."""
+        for i in self.loaded:
+            if i < len(O.bodies) and O.bodies[i] is not None:
+                O.forces.setPermF(i, ZERO)
+        self.loaded = []
