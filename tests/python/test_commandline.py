@@ -1,5 +1,5 @@
-"""ballast.experiments.commandline, the one command line of every experiment (oedometer, box, single_particle:
-scripts/oedometer.py, box_test.py, single_particle.py): text is read strictly (a flag is 0 or 1, numbers in
+"""ballast.experiments.commandline, the one command line of every experiment (oedometer, box, single_particle, triaxial:
+scripts/oedometer.py, box_test.py, single_particle.py, triaxial.py): text is read strictly (a flag is 0 or 1, numbers in
 decimal only), a repeated option, an abbreviation, an unknown name and a bad value are refused with exit status 2
 and one line naming the option, the value and what is allowed, before any work; --help lists the parameters;
 a yade-batch row sets them, and a study table's cells are read by the same reader. Most cases in this process
@@ -30,6 +30,9 @@ EXPERIMENTS = {
     'single_particle': dict(script='single_particle.py', owner='SingleParticle', flag=None, integer='n',
                             integerWords='an integer in [1, 10000] [-]', number='speed', numberWords='a number > 0 [m/s]',
                             abbreviation='--maxStr', full='--maxStrain'),
+    'triaxial': dict(script='triaxial.py', owner='TriaxialTest', flag='reuseSpecimen', integer='cycles',
+                     integerWords='an integer >= 1 [-]', number='f', numberWords='a finite number > 0 [Hz]',
+                     abbreviation='--conf', full='--confining'),
 }
 NAMES = sorted(EXPERIMENTS)
 

@@ -130,3 +130,31 @@ def experiment(ap, argv, declaration, experimentClass):
     except ParamError as e:
         ap.refuse('bad parameter %s: %s' % (e.name, e))
     return exp
+
+
+class Script:
+    """The command line of an experiment whose script is one run (the box test, the triaxial test):
+    ``yade -n -x scripts/<script> [--name value ...]``, every parameter by name (or a yade-batch row), checked before
+    any work. experimentClass: 'module:Class', imported when the run starts (the module needs YADE)."""
+
+    def __init__(self, declaration, script, description, experimentClass):
+        self.declaration, self.script, self.description = declaration, script, description
+        self.experimentClass = experimentClass
+        self.prog = 'yade -n -x scripts/' + script
+
+    def parser(self):
+        ap = OneLineParser(self.script, self.declaration.params, prog=self.prog, description=self.description)
+        return addParameters(ap, self.declaration.params)
+
+    def readParams(self, argv):
+        """defaults <- yade-batch table row <- command line, all checked (readParams)."""
+        return readParams(self.parser(), argv, self.declaration)
+
+    def main(self, argv=None):
+        import importlib
+        from yade import utils
+        argv = sys.argv[1:] if argv is None else argv
+        module, name = self.experimentClass.split(':')
+        experiment(self.parser(), argv, self.declaration, lambda: getattr(importlib.import_module(module), name)).run()
+        utils.waitIfBatch()
+        return 0

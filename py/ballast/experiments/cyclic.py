@@ -35,6 +35,7 @@ then each experiment's own (the oedometer: Bg; the box: settlementPeak, work, ti
 import math
 import os
 import re
+import time
 
 import numpy as np
 import pandas as pd
@@ -98,6 +99,41 @@ def jumpSummary(frame, jumper):
 def wholeCycles(every):
     """Whether saveEvery [cycles] is a whole number of cycles (checkpoints after cycles close)."""
     return float(every).is_integer()
+
+
+class CycleRecorder:
+    """What a cyclic experiment's recorder shares (the box's, the triaxial test's): rows sampled at simulated times
+    (column 0 the time since cycling began, column 1 the cycle count), the current cycle's kept in `samples`, and a
+    row of cycles.csv closed by the recorder's own closeCycle(end, p, ownStep) when a sample falls in the next cycle.
+    Attributes: t0, period, samples, cycles, start (index of the current cycle's first row), cpu, iter0 (CPU and
+    step at its start), jumped (cycles advanced by cycle jumping)."""
+
+    def restored(self):
+        """After a restore: the open cycle's CPU counted from here (a process's clock does not carry over; it was
+        left out, NaN, in the first cycle of every slice and reopened run)."""
+        if self.start is not None:
+            self.cpu = time.process_time()
+
+    def cycle(self):
+        """Whole cycles since cycling began (a sample at a cycle's end belongs to the cycle it ends)."""
+        return int(math.floor((O.time - self.t0) / self.period + 1e-6)) + self.jumped
+
+    def jump(self, cycles):
+        """`cycles` more cycles counted as done without being simulated: the current cycle's rows move with them."""
+        self.jumped += cycles
+        for row in self.samples[self.start:]:
+            row[1] += cycles
+
+    def keep(self, row, p, ownStep=None):
+        """The sample `row` kept; returns the cycle it closed, or 0."""
+        self.samples.append(row)
+        if self.start is None:
+            self.start, self.cpu, self.iter0 = len(self.samples) - 1, time.process_time(), O.iter
+        elif row[1] > self.samples[self.start][1]:   # a cycle ended at this sample: it opens the next one
+            self.closeCycle(len(self.samples) - 1, p, ownStep)
+            self.samples, self.start = self.samples[-1:], 0
+            return int(row[1])
+        return 0
 
 
 class Cyclic:
@@ -237,3 +273,14 @@ class Cyclic:
 
     def jumped(self, cycles):
         """After a jump of `cycles` (subclasses whose own records count cycles move them on)."""
+
+
+def appendSample(exp, row):
+    """A row of the experiment's samples.csv (its recorder's COLUMNS), appended as it is taken (a run that goes on
+    from a state writes its own from there)."""
+    path = os.path.join(exp.out, 'samples.csv')
+    new = not os.path.exists(path)
+    with open(path, 'a') as fh:
+        if new:
+            fh.write(','.join(exp.recorder.COLUMNS) + '\n')
+        fh.write(','.join('%.9g' % v for v in row) + '\n')

@@ -115,6 +115,35 @@ def press(exp, steel, mass, force):
     return pid
 
 
+def layers(exp, shape, area, depth, ballast, pressLayer):
+    """A bed or specimen of `depth` [m] over `area` [m^2] in exp.p['layers'] layers: each a cloud in `shape` of
+    solidFraction of its share of the volume (seed: exp.p['seed'] * 100 + the layer), falling onto the layer below,
+    then pressed at layerPressure by pressLayer(force [N]), which returns the layer's top [m]. Returns the last top."""
+    p, top = exp.p, 0.0
+    for k in range(p['layers']):
+        pos, rad, cloudTop = cloud(shape, p['dMin'], p['dMax'], p['solidFraction'] * area * depth / p['layers'],
+                                   p['seed'] * 100 + k, top)
+        place(pos, rad, ballast)
+        if k == 0:
+            O.dt = preparation.PREP_DT_SAFETY * utils.PWaveTimeStep()
+        tFall = math.sqrt(2 * (cloudTop - top) / 9.81)
+        exp.phases.say('layer %d of %d: %d grains falling from up to %.3f m' % (k + 1, p['layers'], len(rad), cloudTop))
+        deposit(exp, tFall)
+        top = pressLayer(p['layerPressure'] * area)
+        exp.phases.say('layer %d pressed at %.3g kPa: top at %.4f m' % (k + 1, p['layerPressure'] / 1e3, top))
+    return top
+
+
+def pressLayer(exp, steel, mass, force):
+    """press(), then the plate taken away (a layer of a bed or a specimen pressed): the height of its underside [m]
+    at rest."""
+    pid = press(exp, steel, mass, force)
+    top = float(O.bodies[pid].state.pos[2])
+    O.forces.setPermF(pid, Vector3(0, 0, 0))   # a permanent force outlives its body in the force container
+    O.bodies.erase(pid)
+    return top
+
+
 # ---------------------------------------------------------------------------- the store
 def store(path, key, exp, **extra):
     """The grains of the scene saved to `path` (JSON, written atomically: concurrent runs of the same key never

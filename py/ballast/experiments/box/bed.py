@@ -73,19 +73,9 @@ def buildBed(exp):
     ballast.frictionAngle = p['depFriction']
     rig = Rig(walls(p, steel), ballast, steel)
     O.engines = engines(p['prepDamping'], p['law'], rolling(p))
-    area, top = p['boxLength'] * p['boxWidth'], 0.0
-    shape = sample.BoxShape(p['boxLength'], p['boxWidth'])
-    for k in range(p['layers']):
-        pos, rad, cloudTop = sample.cloud(shape, p['dMin'], p['dMax'], p['solidFraction'] * area * p['bedDepth'] /
-                                          p['layers'], p['seed'] * 100 + k, top)
-        sample.place(pos, rad, ballast)
-        if k == 0:
-            O.dt = preparation.PREP_DT_SAFETY * utils.PWaveTimeStep()
-        tFall = math.sqrt(2 * (cloudTop - top) / 9.81)
-        exp.phases.say('layer %d of %d: %d grains falling from up to %.3f m' % (k + 1, p['layers'], len(rad), cloudTop))
-        sample.deposit(exp, tFall)
-        top = press(exp, rig, p['layerPressure'] * area)
-        exp.phases.say('layer %d pressed at %.3g kPa: top at %.4f m' % (k + 1, p['layerPressure'] / 1e3, top))
+    area = p['boxLength'] * p['boxWidth']
+    top = sample.layers(exp, sample.BoxShape(p['boxLength'], p['boxWidth']), area, p['bedDepth'], ballast,
+                        lambda force: press(exp, rig, force))
     escaped = [b.id for b in grains.spheres() if not inside(p, b.state.pos)]
     for i in escaped:
         O.bodies.erase(i)
@@ -106,11 +96,7 @@ def press(exp, rig, force):
     """A steel plate over the whole box pressed with `force` [N] onto the layer until it rests; removed
     after. Returns the height of its underside [m] at rest."""
     p = exp.p
-    pid = sample.press(exp, rig.steel, p['steelDensity'] * p['boxLength'] * p['boxWidth'] * PLATE_THICKNESS, force)
-    top = float(O.bodies[pid].state.pos[2])
-    O.forces.setPermF(pid, Vector3(0, 0, 0))   # a permanent force outlives its body in the force container
-    O.bodies.erase(pid)
-    return top
+    return sample.pressLayer(exp, rig.steel, p['steelDensity'] * p['boxLength'] * p['boxWidth'] * PLATE_THICKNESS, force)
 
 
 def crib(exp, zBase):

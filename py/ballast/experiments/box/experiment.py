@@ -21,11 +21,11 @@ from yade.wrapper import FrictMat, InterpolatingDirectedForceEngine
 
 from ... import runtime
 from ...params import requireWritableDir, validate
-from .. import chain, grains, preparation, scene
+from .. import breakage, chain, grains, preparation, scene
 from ..parameters import CYCLE_JUMP
 from ...settlementlaws import bedChanged
 from ..base import Experiment
-from ..cyclic import Cyclic
+from ..cyclic import Cyclic, appendSample
 from . import bed, outputs
 from .parameters import OWNER, PARAMS, BoxParameters
 from .recorder import LOAD, Recorder
@@ -134,7 +134,7 @@ class BoxTest(Cyclic, Experiment):
         x, r, m = grains.arrays()
         self.initial = {'massInitial': float(np.sum(m)), 'nGrainsInitial': len(r), 'diameters': grains.sieve()[0].tolist(),
                         'masses': m.tolist(), 'zBase': rec.z0, 'ids': grains.kind().ids().tolist()}
-        self.gradings = [outputs.grading(self, 0)]
+        self.gradings = [breakage.grading(self, 0)]
         self.frames = []
         self.startFrames()
         self.save(os.path.join(self.out, 'state-start.yade.gz'))
@@ -152,11 +152,11 @@ class BoxTest(Cyclic, Experiment):
             self.onFloor = True
             self.say('the sleeper reached the box\'s floor (settlement %.1f mm in cycle %d): the bed under it is gone; '
                      'the run stops here' % (1e3 * row[4], row[1] + 1))
-        outputs.appendSample(self, row)
+        appendSample(self, row)
         plot.addData(**dict(zip(('t', 'cycle', 'F', 'Fgrains', 'settlement'), row[:5])))
         if k:
             outputs.writeCycles(self)   # a killed run keeps its cycles (written atomically)
-            if outputs.gradedCycle(k):
+            if breakage.gradedCycle(k):
                 self.grade(k)
             row = dict(zip(Recorder.CYCLE_COLUMNS, self.recorder.cycles[-1]))
             self.cycleDone(k, row['settlement'], bool(bedChanged(row['crushes'], row['abrasions'])), row['inertialMax'],
@@ -168,7 +168,7 @@ class BoxTest(Cyclic, Experiment):
     def grade(self, k):
         """The grading after cycle k, once."""
         if all(g['cycle'] != k for g in self.gradings):
-            self.gradings.append(outputs.grading(self, k))
+            self.gradings.append(breakage.grading(self, k))
 
     def startFrames(self):
         """With vtk: a VTK frame now and every vtk load cycles (a callback at simulated times from the start of

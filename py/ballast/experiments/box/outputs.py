@@ -31,32 +31,9 @@ from ... import grading as gr
 from ...engines import BallastAbrasionEngine, BallastCrushEngine
 from ...runfiles import saveFigure, strictJson, writeAtomic
 from .. import cyclic, grains
+from ..breakage import engines, massLost
 from ..vtk import dataArray, unstructuredGrid, writeContactsVtu, writePvd
 from . import zones
-
-
-def gradedCycle(k):
-    """Cycles whose grading is read: 1, 2, 5 times the powers of ten."""
-    e = 10 ** int(math.floor(math.log10(k))) if k > 0 else 1
-    return k in (e, 2 * e, 5 * e)
-
-
-def engines():
-    return [e for e in O.engines if isinstance(e, (BallastCrushEngine, BallastAbrasionEngine))]
-
-
-def massLost():
-    return float(sum(e.massLost for e in engines()))
-
-
-def grading(exp, cycle):
-    """The grading now: {'cycle', 'passing' [%] per sieve, 'Bg', 'Br', 'BBI'} against the start of cycling."""
-    d, m = grains.sieve()
-    fines = massLost() if exp.p['lostAsFines'] else 0.0
-    before = gr.passing(exp.initial['diameters'], exp.initial['masses'])
-    now = gr.passing(d, m, fines=fines)
-    return {'cycle': cycle, 'passing': now.tolist(), 'Bg': float(gr.marsal(before, now)),
-            'Br': float(gr.hardin(before, now)), 'BBI': float(gr.bbi(before, now))}
 
 
 def crushes(exp):
@@ -120,16 +97,6 @@ def summary(exp):
         'cpuSecondsPerCycle': float(np.nanmedian(cyc.cpuSeconds)) if n and cyc.cpuSeconds.notna().any() else math.nan,
         'stepsPerCycle': rec.period / O.dt, **cyclic.jumpSummary(cyc, exp.jumper),
         **({'stoppedBy': 'sleeperOnFloor'} if exp.onFloor else {})}
-
-
-def appendSample(exp, row):
-    """A row of samples.csv, appended as it is taken (a run that goes on from a state writes its own from there)."""
-    path = os.path.join(exp.out, 'samples.csv')
-    new = not os.path.exists(path)
-    with open(path, 'a') as fh:
-        if new:
-            fh.write(','.join(exp.recorder.COLUMNS) + '\n')
-        fh.write(','.join('%.9g' % v for v in row) + '\n')
 
 
 def cutSamples(exp, t):

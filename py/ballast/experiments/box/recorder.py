@@ -7,14 +7,15 @@ import numpy as np
 from yade import O
 
 from ... import runtime
-from ...engines import BallastAbrasionEngine, BallastCrushEngine
-from .. import chain, grains, quasistatic
+from ...engines import BallastCrushEngine
+from .. import breakage, chain, grains, quasistatic
+from ..cyclic import CycleRecorder
 
 LOAD = 'boxLoad'   # the label of the load on the sleeper (InterpolatingDirectedForceEngine)
 
 
 @runtime.persistent('BoxRecorder')
-class Recorder:
+class Recorder(CycleRecorder):
     """Samples the sleeper and the engines `samples` times a cycle (a callback at simulated times) and closes
     a row of cycles.csv at each cycle's end: the permanent settlement (at the seating load), the resilient
     deflection, the work of the load over the cycle, crushes and abrasions, the largest fatigue damage."""
@@ -39,12 +40,6 @@ class Recorder:
         return {k: getattr(self, k) for k in ('sleeper', 'z0', 't0', 'period', 'samples', 'cycles', 'start', 'jumped',
                                               'iter0')}
 
-    def restored(self):
-        """After a restore: the open cycle's CPU counted from here (a process's clock does not carry over; it was
-        left out, NaN, in the first cycle of every slice and reopened run)."""
-        if self.start is not None:
-            self.cpu = time.process_time()
-
     @classmethod
     def fromState(cls, s, ref=None):
         return runtime.fromAttributes(cls, s)
@@ -67,16 +62,6 @@ class Recorder:
         """Upward force of the grains on the sleeper [N]: its force container holds the contacts and the applied load."""
         return O.forces.f(self.sleeper)[2] + self.applied()
 
-    def cycle(self):
-        """Whole cycles since cycling began (a sample at a cycle's end belongs to the cycle it ends)."""
-        return int(math.floor((O.time - self.t0) / self.period + 1e-6)) + self.jumped
-
-    def jump(self, cycles):
-        """`cycles` more cycles counted as done without being simulated: the current cycle's rows move with them."""
-        self.jumped += cycles
-        for row in self.samples[self.start:]:
-            row[1] += cycles
-
     def inertialNumber(self, p, area, peak, ownStep=None):
         """The bed's inertial number under the sleeper now (experiments.quasistatic): its speed over the bed's depth
         under it, the grains' force on it over its footprint `area` [m^2], NaN below 1 % of the `peak` load [N]."""
@@ -86,20 +71,10 @@ class Recorder:
     def sample(self, p, area, peak, ownStep=None):
         """A row of samples.csv; returns the cycle it closed, or 0. p: the run's parameters; area [m^2] and peak
         [N]: the sleeper's footprint and the peak load, ownStep [s] the grains' own step, for the inertial number."""
-        counts = [sum(getattr(e, k) for e in O.engines if isinstance(e, kind)) for kind, k in
-                  ((BallastCrushEngine, 'nCrushed'), (BallastAbrasionEngine, 'nAbraded'))]
-        crush = [e for e in O.engines if isinstance(e, BallastCrushEngine)]
-        ratio = max([e.maxCrushableRatio for e in crush], default=math.nan)   # at the engine's last check
+        crushed, abraded, ratio = breakage.counts()   # the ratio at the engine's last check
         row = [O.time - self.t0, self.cycle(), self.applied(), self.grainsForce(), self.z0 - self.underside(),
-               self.tilt()] + counts + [ratio, self.inertialNumber(p, area, peak, ownStep)]
-        self.samples.append(row)
-        if self.start is None:
-            self.start, self.cpu, self.iter0 = len(self.samples) - 1, time.process_time(), O.iter
-        elif row[1] > self.samples[self.start][1]:   # a cycle ended at this sample: it opens the next one
-            self.closeCycle(len(self.samples) - 1, p, ownStep)
-            self.samples, self.start = self.samples[-1:], 0
-            return int(row[1])
-        return 0
+               self.tilt(), crushed, abraded, ratio, self.inertialNumber(p, area, peak, ownStep)]
+        return self.keep(row, p, ownStep)
 
     def closeCycle(self, end, p, ownStep=None):
         # rows of states saved before the inertial number have 9 entries

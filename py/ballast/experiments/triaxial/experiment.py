@@ -1,0 +1,230 @@
+"""The large-scale cyclic triaxial test as an experiment on the base (docs/triaxial.md): a cylindrical specimen built
+in a mould (:mod:`.specimen`), the mould taken off under a flexible membrane at the confining pressure p'
+(:mod:`.membrane`), isotropic consolidation to p' (the top platen pressed at p' over the specimen's cross-section),
+then the deviator cycled between qMin and qMax at f: the axial load (p' + q(t)) A on the top platen, A the specimen's
+cross-section as the membrane encloses it (the area correction), with the crushing and abrasion engines of the other
+experiments and all their options.
+
+    from ballast.experiments.triaxial import TriaxialTest
+    test = TriaxialTest(cycles=3)
+    test.run()        # prepare() and load(); writes cycles.csv, samples.csv, grading.csv, summary.json, strains.png
+    test.load(10)     # ten cycles more
+"""
+import os
+
+import numpy as np
+from yade import O, Vector3, plot
+
+from ... import runtime
+from ...params import requireWritableDir, validate
+from ...settlementlaws import bedChanged
+from .. import breakage, grains, preparation, scene
+from ..base import Experiment
+from ..cyclic import Cyclic, appendSample
+from . import outputs, specimen
+from .membrane import Membrane
+from .parameters import OWNER, PARAMS, TriaxialParameters
+from .recorder import Recorder
+
+PRESS, SAMPLER = 'triaxialPress', 'triaxialSampler'
+CONSOLIDATED = (0.02, 2e-6, 1e-5)   # ([s], [m], [-]): consolidated when over that time the platen moved less than
+                                    # this and the volume changed by less than this fraction
+RAMP = 0.02   # [s] the cell pressure and the axial load rise to p' over this time (a cell is filled, not struck)
+
+
+@runtime.persistent('TriaxialTest')
+class TriaxialTest(Cyclic, Experiment):
+    """A crushable ballast specimen in a triaxial cell under a cyclic deviator. Keyword arguments: any parameter of
+    :data:`ballast.experiments.triaxial.parameters.PARAMS`, or parameters=check(...)."""
+
+    NAME = 'triaxial'
+    Parameters = TriaxialParameters
+    REOPEN_PARAMS = ('results', 'runId', 'progress', 'vtk', 'cycles', 'saveEvery', 'specimenDir')
+
+    def __init__(self, parameters=None, **params):
+        self.rig = self.membrane = self.recorder = None
+        self.porosity = self.specimenFile = None
+        self.consolidated = None   # the specimen after consolidation: height, volume, porosity
+        self.tConsolidate = None   # [s] when the pressure began to rise
+        self.tSeat = None          # [s] when the deviator began to rise to qMin
+        self.initial, self.gradings = None, []
+        self.target = None
+        self.cycling = False
+        Experiment.__init__(self, parameters, **params)
+
+    def pieces(self):
+        return Experiment.pieces(self) + [self.rig, self.membrane, self.recorder, self.jumper, self.stepChoice]
+
+    def checkOutputs(self):
+        Experiment.checkOutputs(self)
+        requireWritableDir(OWNER, 'specimenDir', specimen.folder(self.p))
+
+    # ------------------------------------------------------------------ the experiment
+    def prepare(self):
+        """The specimen in its mould under the top platen, the membrane on and the mould off, consolidated to p', seated
+        under qMin."""
+        self.openRunDirectory()
+        self.rig, self.porosity, self.specimenFile = specimen.prepare(self)
+        self.adopt()
+        self.consolidate()
+        self.seat()
+        return self
+
+    def consolidate(self):
+        """The membrane at p', the mould taken off, the top platen pressed at p' A until it rests (within
+        consolidationTime)."""
+        p, rig = self.p, self.rig
+        self.membrane = Membrane(rig.base, rig.top, 0.0, p.cell(), p.depth())
+        self.adopt()
+        t0 = self.tConsolidate = O.time
+        self.press()
+        rig.removeMould()
+        O.engines = O.engines + [runtime.callback(self, 'press', iterPeriod=p['membranePeriod'], label=PRESS)]
+        span, move, change = CONSOLIDATED
+        platen = preparation.still(rig.top, span, move, after=t0 + RAMP + span, unbalanced=0.01)
+        volumes = []
+
+        def done():
+            volumes.append((O.time, self.membrane.volume))
+            old = [v for t, v in volumes if t <= O.time - span]
+            return platen() and bool(old) and abs(volumes[-1][1] - old[-1]) < change * old[-1]
+        self.runUntil(done, tEnd=t0 + p['consolidationTime'], phase='consolidate', checkEvery=100,
+                      extra=lambda: 'height %.4f m, volume %.4g m^3  %s' % (self.membrane.height(), self.membrane.volume,
+                                                                         grains.restInfo()))
+        H, V = self.membrane.height(), self.membrane.volume
+        solid = float(np.sum(grains.volumes()))
+        self.consolidated = {'height': H, 'volume': V, 'porosity': 1 - solid / V, 'time': O.time - t0}
+        self.say('consolidated at %g kPa in %.3g s: height %.4f m, diameter %.4f m, porosity %.3f (%d grains)' % (
+            p['confining'] / 1e3, O.time - t0, H, 2 * np.sqrt(V / (np.pi * H)), self.consolidated['porosity'],
+            len(grains.bodies())))
+
+    def seat(self):
+        """The deviator raised from 0 to qMin over RAMP, held until the platen rests (within consolidationTime): the
+        cycles start from the specimen at rest under qMin, as a laboratory cycle does."""
+        p = self.p
+        t0 = self.tSeat = O.time
+        self.runUntil(preparation.still(self.rig.top, CONSOLIDATED[0], CONSOLIDATED[1], after=t0 + RAMP + CONSOLIDATED[0],
+                                        unbalanced=0.01), tEnd=t0 + p['consolidationTime'], phase='seat', checkEvery=100)
+        self.say('seated at q = %g kPa in %.3g s: height %.4f m' % (p['qMin'] / 1e3, O.time - t0, self.membrane.height()))
+
+    def deviator(self):
+        """The deviator applied now [Pa]: 0 while consolidating, rising to qMin while seating, then the sine."""
+        if self.cycling:
+            return self.p.deviator(O.time - self.recorder.t0)
+        if self.tSeat is not None:
+            return self.p['qMin'] * min(1.0, (O.time - self.tSeat) / RAMP)
+        return 0.0
+
+    def press(self):
+        """Every membranePeriod steps: the membrane's load for the grains as they are, and the axial load
+        (p' + q) A on the top platen, A = the volume the membrane encloses over the platens' distance, less the platen's
+        weight (the load the specimen carries is (p' + q) A, as a load cell under the ram would read it)."""
+        m = self.membrane
+        m.pressure = self.p['confining'] * min(1.0, (O.time - self.tConsolidate) / RAMP)
+        m.update()
+        area = m.volume / m.height()
+        weight = O.bodies[self.rig.top].state.mass * -scene.GRAVITY[2]
+        O.forces.setPermF(self.rig.top, Vector3(0, 0, weight - (m.pressure + self.deviator()) * area))
+
+    def startCycling(self):
+        """The deviator's cycles from now on, the engines, the recorder, the time-step options, the first state."""
+        p = self.p
+        t0 = O.time
+        self.recorder = Recorder(self.rig.top, self.membrane.height(), self.membrane.volume, t0, p.period())
+        self.adopt()
+        self.cycling = True
+        self.addEngines(t0)
+        O.engines = O.engines + [runtime.callback(self, 'sample', virtPeriod=p.period() / p['samples'], virtLast=t0,
+                                                  initRun=True, label=SAMPLER)]
+        self.startCycles(t0, p.period())
+        plot.reset()
+        plot.plots = {'axialStrain': ('q',)}   # YADE's live plot: the deviator against the axial strain
+        self.startTimeStep(self.rig.top, p.period())
+        x, r, m = grains.arrays()
+        self.initial = {'massInitial': float(np.sum(m)), 'nGrainsInitial': len(r), 'diameters': grains.sieve()[0].tolist(),
+                        'masses': m.tolist()}
+        self.gradings = [breakage.grading(self, 0)]
+        self.save(os.path.join(self.out, 'state-start.yade.gz'))
+
+    def sample(self):
+        """The recorder's sample; at a cycle's end its row, the grading after the cycles of the 1-2-5 series."""
+        k = self.recorder.sample(self.p, self.membrane, self.deviator(), self.ownStep())
+        row = self.recorder.samples[-1]
+        appendSample(self, row)
+        plot.addData(**dict(zip(('t', 'cycle', 'q', 'qGrains', 'p', 'axialStrain', 'volumetricStrain'), row[:7])))
+        if k:
+            outputs.writeCycles(self)
+            if breakage.gradedCycle(k):
+                self.grade(k)
+            c = dict(zip(Recorder.CYCLE_COLUMNS, self.recorder.cycles[-1]))
+            self.cycleDone(k, c['settlement'], bool(bedChanged(c['crushes'], c['abrasions'])), c['inertialMax'],
+                           c['responseRatio'])
+
+    def jumped(self, cycles):
+        self.recorder.jump(cycles)
+
+    def grade(self, k):
+        if all(g['cycle'] != k for g in self.gradings):
+            self.gradings.append(breakage.grading(self, k))
+
+    def cyclesDone(self):
+        return len(self.recorder.cycles) + self.recorder.jumped if self.recorder is not None else 0
+
+    def load(self, cycles=None):
+        """Run `cycles` more load cycles (default the parameter's), then write every output and save the state.
+        Returns the summary."""
+        p = self.p
+        n = p['cycles'] if cycles is None else validate(OWNER + '.load', {'cycles': PARAMS['cycles']}, 'cycles', cycles)
+        if self.recorder is None:
+            if self.rig is None:
+                self.prepare()
+            self.startCycling()
+        if self.out is None:   # a reopened run writes into a folder of its own
+            self.dir.create()
+            self.markRunning(continues=self.dir.previous)
+        self.syncJumping()
+        self.target = self.cyclesDone() + n
+        return self.goOnToEnd()
+
+    def goOnToEnd(self):
+        p, rec, target = self.p, self.recorder, self.target
+        tEnd = rec.t0 + (target - rec.jumped) * rec.period
+        if self.jumper is not None:
+            self.jumper.target = target
+        self.say('load: %d cycle(s) of q %g-%g kPa at %g Hz under p\' = %g kPa, dt = %.3g s (%.3g steps a cycle)' % (
+            target - self.cyclesDone(), p['qMin'] / 1e3, p['qMax'] / 1e3, p['f'], p['confining'] / 1e3, O.dt,
+            rec.period / O.dt))
+        if self.cyclesDone() < target:
+            self.runUntil(lambda: self.cyclesDone() >= target, tEnd=tEnd + 2 * rec.period / p['samples'], phase='load',
+                          checkEvery=50, simSpan=tEnd - O.time, simStart=O.time,
+                          extra=lambda: 'cycle %d of %d, axial strain %.3f %%, volumetric %.3f %%, %d crushed' % (
+                              self.cyclesDone(), target, 100 * (rec.samples[-1][5] if rec.samples else 0),
+                              100 * (rec.samples[-1][6] if rec.samples else 0), rec.samples[-1][9] if rec.samples else 0))
+        k = self.cyclesDone()
+        self.grade(k)
+        s = self.finishRun(lambda: outputs.write(self))
+        self.say('done: %d cycles, axial strain %.3f %%, volumetric %.3f %%, %d crushed, %d abraded; results in %s' % (
+            k, 100 * s['axialStrain'], 100 * s['volumetricStrain'], s['nCrushed'], s['nAbraded'], self.out))
+        return s
+
+    def summary(self):
+        return outputs.summary(self)
+
+    # ------------------------------------------------------------------ saving
+    def state(self):
+        return dict(self.baseState(), rig=runtime.ref(self.rig), membrane=runtime.ref(self.membrane),
+                    recorder=runtime.ref(self.recorder), jumper=runtime.ref(self.jumper),
+                    stepChoice=runtime.ref(self.stepChoice), porosity=self.porosity, specimenFile=self.specimenFile,
+                    consolidated=self.consolidated, tConsolidate=self.tConsolidate, tSeat=self.tSeat, initial=self.initial, gradings=self.gradings, target=self.target,
+                    cycling=self.cycling)
+
+    @classmethod
+    def fromState(cls, s, ref):
+        exp = cls.__new__(cls)
+        exp.setBaseState(s, ref)
+        exp.rig, exp.membrane, exp.recorder = ref(s['rig']), ref(s['membrane']), ref(s['recorder'])
+        exp.jumper = ref(s['jumper']) if s.get('jumper') is not None else None
+        exp.stepChoice = ref(s['stepChoice']) if s.get('stepChoice') is not None else None
+        for k in ('porosity', 'specimenFile', 'consolidated', 'tConsolidate', 'tSeat', 'initial', 'gradings', 'target', 'cycling'):
+            setattr(exp, k, s[k])
+        return exp

@@ -1,0 +1,105 @@
+"""What the triaxial test writes (docs/triaxial.md, "Outputs"), in <results>/<run id>/:
+
+* cycles.csv    a row per cycle, the shared schema (experiments.cyclic; settlement: the top platen's permanent
+                travel [m], resilient: its resilient travel [m]) then axialStrain, volumetricStrain (permanent, at the
+                cycle's end, compression positive), resilientStrain, resilientModulus [Pa], qGrainsMin and qGrainsMax
+                (the deviator the grains carry on the top platen at its lowest and highest [Pa])
+* samples.csv   `samples` rows a cycle: the stress path (q applied and carried, the mean stress p [Pa]), the strains,
+                the specimen's height [m] and volume [m^3], crushes and abrasions so far
+* grading.csv   percentage passing each sieve after cycles 0, 1, 2, 5, 10, ... and the last, with B_g, B_r and BBI
+* summary.json  the run: strains, the specimen (porosity in the mould and consolidated), crushes, the mass ledger, CPU
+* strains.png   permanent axial and volumetric strain against N (log N), the measured curves of `reference` over them
+"""
+import json
+import math
+import os
+
+import numpy as np
+import pandas as pd
+from yade import O
+
+from ... import grading as gr
+from ...engines import BallastAbrasionEngine, BallastCrushEngine
+from ...runfiles import saveFigure, strictJson, writeAtomic
+from .. import cyclic, grains
+from ..breakage import engines, massLost
+from .recorder import Recorder
+
+OWN_COLUMNS = ('axialStrain', 'volumetricStrain', 'resilientStrain', 'resilientModulus', 'qGrainsMin', 'qGrainsMax')
+
+
+def cycleTable(exp):
+    """cycles.csv as a DataFrame (the shared schema, then OWN_COLUMNS)."""
+    return cyclic.table([dict(zip(Recorder.CYCLE_COLUMNS, row)) for row in exp.recorder.cycles], OWN_COLUMNS,
+                        exp.jumper, exp.stepChoice)
+
+
+def writeCycles(exp):
+    cyclic.write(os.path.join(exp.out, 'cycles.csv'), cycleTable(exp))
+
+
+def summary(exp):
+    p, rec = exp.p, exp.recorder
+    cyc = cycleTable(exp)
+    n = len(cyc)
+    x, r, m = grains.arrays()
+    lost = massLost()
+    wall, cpu = exp.seconds()
+
+    def last(column):
+        return float(cyc[column].iloc[-1]) if n else 0.0
+    return {
+        'experiment': exp.NAME, 'runId': exp.runId, 'params': dict(p), 'cycles': n,
+        'axialStrain': last('axialStrain'), 'volumetricStrain': last('volumetricStrain'),
+        'resilientStrain': last('resilientStrain'), 'resilientModulus': last('resilientModulus'),
+        'settlement': last('settlement'), 'resilient': last('resilient'),
+        'axialStrainFirstCycle': float(cyc.axialStrain.iloc[0]) if n else 0.0,
+        'nCrushed': int(sum(e.nCrushed for e in engines() if isinstance(e, BallastCrushEngine))),
+        'nAbraded': int(sum(e.nAbraded for e in engines() if isinstance(e, BallastAbrasionEngine))),
+        'maxDamage': float(cyc.maxDamage.max()) if n else 0.0,
+        'maxStressRatio': float(cyc.maxStressRatio.max()) if n else math.nan,
+        'nGrainsInitial': exp.initial['nGrainsInitial'], 'nGrains': len(r), 'porosityMould': exp.porosity,
+        'consolidated': exp.consolidated, 'specimenFile': exp.specimenFile, 'loadPeriod': rec.period,
+        'massInitial': exp.initial['massInitial'], 'massGrains': float(np.sum(m)), 'massLost': lost,
+        'massLedgerError': float(np.sum(m)) + lost - exp.initial['massInitial'],
+        'gradings': [{k: g[k] for k in ('cycle', 'Bg', 'Br', 'BBI')} for g in exp.gradings],
+        'dt': O.dt, 'steps': O.iter, 'wallSeconds': wall, 'cpuSeconds': cpu,
+        'cpuSecondsPerCycle': float(np.nanmedian(cyc.cpuSeconds)) if n and cyc.cpuSeconds.notna().any() else math.nan,
+        'stepsPerCycle': rec.period / O.dt, **cyclic.jumpSummary(cyc, exp.jumper)}
+
+
+def write(exp):
+    """Every output file; returns the summary."""
+    out = exp.out
+    s = summary(exp)
+    cyc = cycleTable(exp)
+    g = pd.DataFrame([dict({'cycle': x['cycle'], 'Bg': x['Bg'], 'Br': x['Br'], 'BBI': x['BBI']},
+                           **{'P%g' % a: v for a, v in zip(gr.SIEVES_MM, x['passing'])}) for x in exp.gradings])
+    for name, df in (('cycles.csv', cyc), ('grading.csv', g)):
+        writeAtomic(os.path.join(out, name), df.to_csv(index=False, float_format='%.9g'))
+    writeAtomic(os.path.join(out, 'summary.json'), json.dumps(strictJson(s), indent=1) + '\n')
+    figure(cyc, os.path.join(out, 'strains.png'), exp.p.references())
+    return s
+
+
+def figure(cycles, path, references=()):
+    """strains.png: the permanent axial and volumetric strain [%] against N (log N), each measured curve of
+    `references` ((kind, N, strain) as strains.readReference gives) over its own."""
+    import matplotlib
+    matplotlib.use('Agg')
+    import matplotlib.pyplot as plt
+    from matplotlib.ticker import FuncFormatter
+    fig, axes = plt.subplots(2, 1, figsize=(6.4, 6.4), sharex=True)
+    N = cycles.cycle.to_numpy()
+    for ax, kind, column in ((axes[0], 'axial', 'axialStrain'), (axes[1], 'volumetric', 'volumetricStrain')):
+        ax.semilogx(N, 100 * cycles[column].to_numpy(), 'o-', ms=3, label='simulated')
+        for k, (refKind, Nr, er) in enumerate(r for r in references if r[0] == kind):
+            ax.semilogx(Nr, 100 * er, 's--', ms=3, color='k', label='measured' if k == 0 else None)
+        ax.set_ylabel('%s strain [%%]%s' % (kind, ' (compression +)' if kind == 'volumetric' else ''))
+        for axis in (ax.xaxis.set_major_formatter, ax.xaxis.set_minor_formatter):   # 2, 3, 20: not 2x10^0
+            axis(FuncFormatter(lambda v, _: '%g' % v if ('%.0e' % v)[0] in '1235' else ''))
+        ax.grid(True, which='both', alpha=0.3)
+        ax.legend(loc='upper left')
+    axes[1].set_xlabel('load cycles N')
+    fig.suptitle('Permanent strains of the triaxial specimen')
+    return saveFigure(fig, path)

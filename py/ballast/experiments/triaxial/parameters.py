@@ -1,0 +1,147 @@
+"""Parameters of the cyclic triaxial test (docs/triaxial.md), declared once: the library (``TriaxialTest(**kw)``), the
+command line (``--name value``) and study tables use these names, units, ranges and defaults. The grains, their
+contact law and every crushing, abrasion, strength, fatigue, time-step and cycle-jumping option are the declarations
+every experiment shares (:mod:`ballast.experiments.parameters`); the test's own are the specimen, its preparation,
+the membrane and the stresses. Needs no YADE."""
+import hashlib
+import json
+import math
+
+from ...params import NUMBER_NONNEGATIVE, NUMBER_POSITIVE, Param, anyText, between, boolean, flag, intBetween, \
+    nonNegative, positive, positiveInt, text
+from ..parameters import (CONTACT, CYCLE_JUMP, CYCLE_OUTPUTS, ENGINES, GRAINS, INTEGRATION, PREPARATION, QUASI_STATIC,
+                          RUN, SEED, STEEL, ExperimentParameters, take)
+from .strains import CurveError, readReference
+
+OWNER = 'TriaxialTest'
+
+PARAMS = {
+    'seed': SEED,
+    # the specimen (the Wollongong group's large-scale cell: Indraratna, Ionescu and Christie 1998; Sun, Indraratna
+    # and Nimbalkar 2016): 300 mm across, 600 mm high
+    'diameter': Param(0.3, 'm', 'specimen diameter (the mould\'s inner diameter)', positive, NUMBER_POSITIVE),
+    'height': Param(0.6, 'm', 'specimen height (the mould is filled to it)', positive, NUMBER_POSITIVE),
+    'segments': Param(48, '-', 'facets around the preparation mould', intBetween(12, 720), 'an integer in [12, 720]'),
+    'layers': Param(4, '-', 'layers the specimen is placed and compacted in (the laboratory compacts in layers)',
+                    intBetween(1, 40), 'an integer in [1, 40]'),
+    'solidFraction': Param(0.6, '-', 'solid volume of the grains of a layer over the layer\'s share of the mould: '
+                           'with layerPressure, what sets the specimen\'s porosity (reported as porosity)',
+                           between(0.3, 0.74), 'a number in [0.3, 0.74)'),
+    'layerPressure': Param(1e5, 'Pa', 'pressure on each frictionless layer through a plate until it rests', positive,
+                           NUMBER_POSITIVE),
+    'reuseSpecimen': Param(True, '-', 'load the stored specimen of this seed and specimen parameters if there is one',
+                           boolean, '0 or 1', flag),
+    'specimenDir': Param('', 'path', 'where specimens are stored (default <results>/specimens)', anyText, 'a path',
+                         text),
+    'platenMass': Param(20.0, 'kg', 'mass of the top platen and the loading ram it moves with', positive,
+                        NUMBER_POSITIVE),
+    # the membrane (docs/triaxial.md, "The membrane")
+    'membraneCell': Param(0.0, 'm', 'size of the membrane\'s cells (0: dMin / 2)', nonNegative, NUMBER_NONNEGATIVE),
+    'membraneDepth': Param(0.0, 'm', 'how far into a gap between outer grains the membrane follows (0: dMin / 4)',
+                           nonNegative, NUMBER_NONNEGATIVE),
+    'membranePeriod': Param(10, 'steps', 'steps between updates of the membrane\'s load and the axial load',
+                            intBetween(1, 10000), 'an integer in [1, 10000]'),
+    # the stresses (Sun, Indraratna and Nimbalkar 2016: p' = 60 kPa, q_max = 230 kPa, 5 Hz; q_min is not in the data
+    # given: a choice, docs/triaxial.md)
+    'confining': Param(60e3, 'Pa', 'effective confining pressure p\' (the cell pressure, drained)', positive,
+                       NUMBER_POSITIVE),
+    'qMin': Param(45e3, 'Pa', 'smallest deviator stress of a cycle (a choice: not given with the measured curve)',
+                  nonNegative, NUMBER_NONNEGATIVE),
+    'qMax': Param(230e3, 'Pa', 'largest deviator stress of a cycle', positive, NUMBER_POSITIVE),
+    'f': Param(5.0, 'Hz', 'loading frequency of the sine', positive, NUMBER_POSITIVE),
+    'cycles': Param(10, '-', 'load cycles of one load()', positiveInt, 'an integer >= 1'),
+    'samples': Param(50, '-', 'rows of samples.csv per cycle (the strains and the stress path)', intBetween(20, 100000),
+                     'an integer in [20, 100000]'),
+    'reference': Param('', 'path', 'measured curves drawn over the simulated ones in strains.png: CSV files with a header '
+                       'N,axial_strain or N,volumetric_strain (strains as fractions), separated by commas', anyText,
+                       'paths', text),
+    'consolidationTime': Param(0.5, 's', 'longest isotropic consolidation (it ends earlier once the platen rests)',
+                               positive, NUMBER_POSITIVE),
+    'rollingFriction': CONTACT['rollingFriction'].withDefault(0.3, CONTACT['rollingFriction'].doc.replace(
+        "0: none, the paper's spheres", "0: none, the paper's spheres (which roll apart under a deviator); 0.3 by "
+        "default here, as in the box test")),
+    **GRAINS,
+    **take(STEEL, 'steelYoungRatio', 'steelPoisson', 'steelFriction', 'steelDensity'),
+    **take(CONTACT, 'law', 'rollingStiffness'),
+    **PREPARATION,
+    **INTEGRATION,
+    **ENGINES,
+    **RUN,
+    **CYCLE_JUMP,
+    **CYCLE_OUTPUTS,
+    **QUASI_STATIC,
+}
+
+# What decides a specimen: these parameters and the version of its preparation (bump it whenever specimen.build
+# changes: stored specimens of older versions are then not reused).
+SPECIMEN_KEYS = ('seed', 'diameter', 'height', 'segments', 'layers', 'solidFraction', 'layerPressure', 'steelFriction',
+                 'dMin', 'dMax', 'young', 'poisson', 'friction', 'density', 'steelYoungRatio', 'steelPoisson',
+                 'steelDensity', 'prepYoung', 'prepDamping', 'depFriction', 'law', 'rollingFriction', 'rollingStiffness')
+SPECIMEN_VERSION = 1
+
+
+def specimenKey(p):
+    """(the values that decide the specimen, the file name it is stored under)."""
+    d = dict({k: p[k] for k in SPECIMEN_KEYS}, version=SPECIMEN_VERSION)
+    h = hashlib.sha1(json.dumps(d, sort_keys=True).encode()).hexdigest()[:10]
+    return d, 'specimen-seed%d-%s.json' % (p['seed'], h)
+
+
+class TriaxialParameters(ExperimentParameters):
+    """The triaxial test's checked parameters (frozen) and what follows from them."""
+
+    OWNER, PARAMS = OWNER, PARAMS
+
+    def period(self):
+        return 1.0 / self['f']
+
+    def deviator(self, t):
+        """The deviator stress [Pa] at loading time t [s]: the sine from qMin up to qMax and back, a cycle from t = 0
+        (q = qMin at each cycle's start and end)."""
+        return self['qMin'] + (self['qMax'] - self['qMin']) * 0.5 * (1 - math.cos(2 * math.pi * self['f'] * t))
+
+    def cell(self):
+        """The membrane's cell size [m] (membraneCell, or dMin / 2)."""
+        return self['membraneCell'] or self['dMin'] / 2
+
+    def depth(self):
+        """How far into a gap the membrane follows [m] (membraneDepth, or dMin / 4)."""
+        return self['membraneDepth'] or self['dMin'] / 4
+
+    def references(self):
+        """The measured curves of `reference`: [(kind, N, strain)] (strains.readReference)."""
+        return [readReference(f.strip()) for f in self['reference'].split(',') if f.strip()]
+
+    def crossCheck(self):
+        """Checks between parameters; each error names the parameter at fault."""
+        p, bad = self, self.bad
+        self.checkSizes()
+        self.checkBed()
+        if p['diameter'] < 4 * p['dMax']:
+            bad('diameter', 'must hold at least 4 of the largest grains across, 4 dMax = %g m' % (4 * p['dMax']))
+        if p['height'] < 2 * p['diameter'] / 3 or p['height'] > 3 * p['diameter']:
+            bad('height', '%g m: a triaxial specimen is 2/3 to 3 times as high as it is wide (diameter %g m)' % (
+                p['height'], p['diameter']))
+        if p['height'] / p['layers'] < p['dMax']:
+            bad('layers', 'layers of %.3g m are thinner than the largest grain dMax = %g m' % (
+                p['height'] / p['layers'], p['dMax']))
+        if p['qMin'] >= p['qMax']:
+            bad('qMin', 'must be smaller than qMax = %g Pa' % p['qMax'])
+        if p['membraneCell'] > p['dMax']:
+            bad('membraneCell', '%g m is larger than the largest grain, dMax = %g m: the membrane would not see the '
+                'grains it rests on' % (p['membraneCell'], p['dMax']))
+        if p['membraneCell'] and p['membraneCell'] < p['dMin'] / 20:
+            bad('membraneCell', '%g m is under dMin / 20 = %g m: cells far finer than the grains cost without use' % (
+                p['membraneCell'], p['dMin'] / 20))
+        try:
+            self.references()
+        except CurveError as e:
+            bad('reference', str(e))
+        self.checkDensityStep()
+        self.checkCycleJump()
+        self.checkCycles(self.period(), 'f', 'cycles')
+
+
+def check(values, text=False):
+    """All parameters checked, as :class:`TriaxialParameters`."""
+    return TriaxialParameters.check(values, text)

@@ -1,0 +1,94 @@
+"""The cyclic triaxial test end to end on a small specimen (0.12 x 0.24 m, grains 20-30 mm, E = 3e9 Pa, 20 Hz, 2
+cycles): cycles.csv in the shared schema; the strains of samples.csv are the boundary's, by hand; a scripted scaling
+of the whole specimen by s changes the strains by exactly 1 - s (axial) and 1 - s^3 (volumetric); the grains carry
+the deviator at its peaks within 5 %; the specimen at rest after consolidation and at the end carries p' across both
+diametral planes within 10 % (dynamic: the end of a 20 Hz cycle)."""
+import json
+import math
+import os
+
+import pandas as pd
+import pytest
+
+pytest.importorskip('yade')
+from yade import O  # noqa: E402
+
+from ballast.experiments import cyclic  # noqa: E402
+from ballast.experiments.triaxial import TriaxialTest  # noqa: E402
+from ballast.experiments.triaxial.outputs import OWN_COLUMNS  # noqa: E402
+from ballast.experiments.triaxial.strains import axialStrain, volumetricStrain  # noqa: E402
+from test_triaxial_membrane import crossing  # noqa: E402
+
+SMALL = dict(diameter=0.12, height=0.24, dMin=0.02, dMax=0.03, layers=2, young=3e9, prepYoung=3e8, f=20.0, cycles=2,
+             progress=1e6)
+
+
+@pytest.fixture(scope='module')
+def run(tmp_path_factory):
+    out = str(tmp_path_factory.mktemp('triaxial'))
+    test = TriaxialTest(results=out, runId='small', **SMALL)
+    test.prepare()
+    H, V = test.membrane.height(), test.membrane.volume
+    lateral = [crossing(axis, 0.0) / (2 * math.sqrt(V / (math.pi * H)) * H) for axis in (0, 1)]
+    s = test.load()
+    return test, s, os.path.join(out, 'small'), lateral
+
+
+def test_cycles_in_the_shared_schema(run):
+    test, s, folder, _ = run
+    c = pd.read_csv(os.path.join(folder, 'cycles.csv'))
+    assert tuple(c.columns) == cyclic.COLUMNS + OWN_COLUMNS
+    assert c.cycle.tolist() == [1, 2] and s['cycles'] == 2
+    assert (c.nGrains == s['nGrainsInitial']).all()
+    assert abs(s['massLedgerError']) < 1e-12 * s['massInitial']
+    assert 0.3 < s['consolidated']['porosity'] < 0.5
+    for name in ('samples.csv', 'grading.csv', 'summary.json', 'strains.png', 'state-end.yade.gz'):
+        assert os.path.getsize(os.path.join(folder, name)) > 0, name
+
+
+def test_strains_are_the_boundarys(run):
+    test, s, folder, _ = run
+    rec = test.recorder
+    rows = pd.read_csv(os.path.join(folder, 'samples.csv'))   # written to 9 digits: heights to 1e-9 m
+    assert rows.axialStrain.to_numpy() == pytest.approx(((rec.H0 - rows.height) / rec.H0).to_numpy(), rel=1e-6, abs=1e-8)
+    assert rows.volumetricStrain.to_numpy() == pytest.approx(((rec.V0 - rows.volume) / rec.V0).to_numpy(), rel=1e-6,
+                                                             abs=1e-8)
+    c = pd.read_csv(os.path.join(folder, 'cycles.csv'))
+    assert c.axialStrain.to_numpy() == pytest.approx((c.settlement / rec.H0).to_numpy(), rel=1e-8)
+
+
+def test_a_scripted_scaling_strains_by_hand(run):
+    # every grain, its radius, the platen and the membrane's cells scaled by s about the base: the membrane meets the
+    # same grains at s times the radius, H -> s H, V -> s^3 V
+    test, _, _, _ = run
+    m = test.membrane
+    m.update()
+    H, V = m.height(), m.volume
+    base = O.bodies[m.bottom].state.pos[2]
+    s = 0.98
+    for b in O.bodies:
+        if b is None or b.id == m.bottom:
+            continue
+        p = b.state.pos
+        b.state.pos = (s * p[0], s * p[1], base + s * (p[2] - base))
+        if hasattr(b.shape, 'radius'):
+            b.shape.radius *= s
+    m.cell, m.depth = s * m.cell, s * m.depth
+    m.update()
+    assert axialStrain(H, m.height()) == pytest.approx(1 - s, rel=1e-9)
+    assert volumetricStrain(V, m.volume) == pytest.approx(1 - s ** 3, rel=1e-6)
+
+
+def test_the_grains_carry_the_deviator_at_its_peaks(run):
+    test, s, folder, _ = run
+    c = pd.read_csv(os.path.join(folder, 'cycles.csv'))
+    p = test.p
+    assert c.qGrainsMax.iloc[-1] == pytest.approx(p['qMax'], rel=0.05)
+    summary = json.load(open(os.path.join(folder, 'summary.json')))
+    assert summary['params']['qMax'] == p['qMax']
+
+
+def test_the_consolidated_specimen_carries_the_cell_pressure(run):
+    test, _, _, lateral = run
+    for sigma in lateral:
+        assert sigma == pytest.approx(test.p['confining'], rel=0.10)
