@@ -1,6 +1,6 @@
 """Reading a run with pandas: the files of one oedometer run as DataFrames.
 
-    python3 examples/read_run_with_pandas.py RUNDIR
+    /usr/bin/python3 examples/read_run_with_pandas.py RUNDIR
 
 RUNDIR is a run directory of scripts/oedometer.py (results/<run id>/). The columns are those of the
 README's output table: fd.csv (t, F, delta, ...), events.csv (one row per crush or abrasion),
@@ -44,5 +44,5 @@ def main(run):
 
 if __name__ == '__main__':
     if len(sys.argv) != 2:
-        sys.exit('usage: python3 examples/read_run_with_pandas.py RUNDIR')
+        sys.exit('usage: /usr/bin/python3 examples/read_run_with_pandas.py RUNDIR')
     main(sys.argv[1])
