@@ -126,13 +126,30 @@ def callback(obj, method, **periodic):
 
 
 def get(oid):
-    """The live object with id `oid`, rebuilt from the saved document if the scene was loaded."""
+    """The live object with id `oid`, rebuilt from the saved document if the scene was loaded. An engine of the
+    package built before this scene (before an O.reset(), as YADE's own engines may be) and put in its O.engines
+    is adopted by it under its id."""
     s = current()
     obj = s.objects.get(oid)
+    if obj is None:
+        obj = _engineBuiltBefore(oid)
+        if obj is not None:
+            s.objects[oid], s.ids[id(obj)] = obj, oid
     if obj is None:
         raise RuntimeError('ballast: no object %r in this scene (O.tags[%r] does not hold it): its PyRunner belongs '
                            'to another scene' % (oid, TAG))
     return obj
+
+
+def _engineBuiltBefore(oid):
+    """The engine of the package (a Runner, a Python object) in this scene's O.engines whose command fires `oid`, or
+    None."""
+    for e in O.engines:
+        if isinstance(e, Runner):
+            m = _COMMAND_RE.match(e.command)
+            if m and m.group(1) == oid:
+                return e
+    return None
 
 
 def fire(oid, method):

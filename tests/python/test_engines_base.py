@@ -179,3 +179,22 @@ def test_resize_grain_goes_through_the_kind_and_updates_the_table():
     assert rs.volumeBefore == pytest.approx(4 / 3 * math.pi * R ** 3, rel=1e-15)
     assert rs.massBefore == m and rs.massAfter == pytest.approx(0.9 ** 3 * m, rel=1e-14)
     assert tab.radii.tolist() == [0.9 * R] and tab.radiusById[g] == 0.9 * R
+
+
+def test_an_engine_built_before_its_scene_runs_in_it():
+    """As YADE's own engines: built, then O.reset() and the scene built (packedBox resets), then put in O.engines:
+    the scene adopts them at their first call; they check, and their state goes with the scene's saves."""
+    from engine_scenes import packedBox
+    crush = BallastCrushEngine(ft0=1e9, iterPeriod=1)
+    abrasion = BallastAbrasionEngine(strength=1e3, iterPeriod=1)   # far below any contact's Hertz pressure
+    packedBox(n=3)
+    O.engines = O.engines + [crush, abrasion]
+    O.run(10, True)
+    assert crush.nChecks == 10 and crush.nCrushed == 0
+    assert abrasion.nAbraded > 0
+    n = abrasion.nAbraded
+    O.saveTmp('built-before')
+    O.loadTmp('built-before')
+    O.run(1, True)
+    back = [e for e in O.engines if isinstance(e, BallastAbrasionEngine)]
+    assert len(back) == 1 and back[0].nChecks == 11 and back[0].nAbraded >= n
