@@ -212,6 +212,14 @@ def _readDocument(text):
     return doc
 
 
+def savedTypes():
+    """The type names of the objects saved in the current scene's document (an empty set without one); not
+    rebuilt. StateFormatError if the document is damaged."""
+    if TAG not in O.tags.keys():
+        return set()
+    return {entry['type'] for entry in _readDocument(O.tags[TAG])['objects'].values()}
+
+
 def restore():
     """Rebuild the objects saved in the current scene (if it is not live) and put them back in O.engines.
     Returns {id: object}."""

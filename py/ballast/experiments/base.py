@@ -353,4 +353,11 @@ class Experiment:
             raise StateFileError('%s: %s is not a loadable state: YADE could not read it (%s: %s; an XML state cut short '
                                  'or damaged inside its compression?)' % (who, path, type(e).__name__, e or 'no message')) \
                 from None
+        saved = runtime.savedTypes()
+        from . import declaration, names   # an experiment's saved type is its declaration's owner (BoxTest, ...)
+        owners = {declaration(n).owner for n in names()}
+        others = sorted(t for t in saved if t in owners and t != cls.persistentType)
+        if cls.persistentType not in saved and others:
+            raise StateFileError('%s: %s is a state of another experiment (it holds a saved %s, not a %s)' % (
+                who, path, others[0], cls.persistentType))
         return cls.fromScene(readOnly=readOnly, **overrides)

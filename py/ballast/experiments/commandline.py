@@ -132,6 +132,20 @@ def experiment(ap, argv, declaration, experimentClass):
     return exp
 
 
+def run(ap, exp):
+    """exp.run(), with what it finds wrong in its input before any work (a state to go on from that is damaged, of
+    another version or of another physics) refused in one line, exit status 2, as a bad parameter is. Returns the
+    summary."""
+    from ..runtime import StateFormatError
+    from .rundir import StateFileError
+    try:
+        return exp.run()
+    except (StateFileError, StateFormatError) as e:
+        ap.refuse('bad state: %s' % e)
+    except ParamError as e:
+        ap.refuse('bad parameter %s: %s' % (e.name, e))
+
+
 class Script:
     """The command line of an experiment whose script is one run (the box test, the triaxial test):
     ``yade -n -x scripts/<script> [--name value ...]``, every parameter by name (or a yade-batch row), checked before
@@ -155,6 +169,7 @@ class Script:
         from yade import utils
         argv = sys.argv[1:] if argv is None else argv
         module, name = self.experimentClass.split(':')
-        experiment(self.parser(), argv, self.declaration, lambda: getattr(importlib.import_module(module), name)).run()
+        ap = self.parser()
+        run(ap, experiment(ap, argv, self.declaration, lambda: getattr(importlib.import_module(module), name)))
         utils.waitIfBatch()
         return 0

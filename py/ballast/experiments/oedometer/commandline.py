@@ -45,7 +45,8 @@ def main(argv=None):
     def cls():
         from .experiment import Oedometer
         return Oedometer
-    run = commandline.experiment(parser(), argv, DECLARATION, cls)
-    summary = run.run()
+    ap = parser()
+    run = commandline.experiment(ap, argv, DECLARATION, cls)
+    summary = commandline.run(ap, run)
     utils.waitIfBatch()
     return run, summary
