@@ -44,6 +44,7 @@ def test_cycles_in_the_shared_schema(run):
     assert (c.nGrains == s['nGrainsInitial']).all()
     assert abs(s['massLedgerError']) < 1e-12 * s['massInitial']
     assert 0.3 < s['consolidated']['porosity'] < 0.5
+    assert s['stepsPerCycle'] == c.stepsPerCycle.median()   # the steps the cycles took, not the period over dt
     for name in ('samples.csv', 'grading.csv', 'summary.json', 'strains.png', 'state-end.yade.gz'):
         assert os.path.getsize(os.path.join(folder, name)) > 0, name
 

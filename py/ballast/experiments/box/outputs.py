@@ -95,7 +95,9 @@ def summary(exp):
         'gradings': [{k: g[k] for k in ('cycle', 'Bg', 'Br', 'BBI')} for g in exp.gradings],
         'dt': O.dt, 'steps': O.iter, 'wallSeconds': wall, 'cpuSeconds': cpu,
         'cpuSecondsPerCycle': float(np.nanmedian(cyc.cpuSeconds)) if n and cyc.cpuSeconds.notna().any() else math.nan,
-        'stepsPerCycle': rec.period / O.dt, **cyclic.jumpSummary(cyc, exp.jumper),
+        # the steps the cycles took (their median, as cpuSecondsPerCycle), not the period over the last step
+        'stepsPerCycle': (float(np.nanmedian(cyc.stepsPerCycle)) if n and cyc.stepsPerCycle.notna().any()
+                          else rec.period / O.dt), **cyclic.jumpSummary(cyc, exp.jumper),
         **({'stoppedBy': 'sleeperOnFloor'} if exp.onFloor else {})}
 
 
