@@ -27,8 +27,8 @@ from .parameters import OWNER, PARAMS, TriaxialParameters
 from .recorder import Recorder
 
 PRESS, SAMPLER = 'triaxialPress', 'triaxialSampler'
-CONSOLIDATED = (0.02, 2e-6, 1e-5)   # ([s], [m], [-]): consolidated when over that time the platen moved less than
-                                    # this and the volume changed by less than this fraction
+CONSOLIDATED = (0.02, 1e-5, 1e-5)   # ([s], [-], [-]): at rest when over that time the platen moved less than this
+                                    # fraction of the height and the volume changed by less than this fraction
 REST = 0.02   # [-] YADE's unbalanced force at rest (the membrane's load, moved from grain to grain every membranePeriod
               # steps, keeps a 1 200-grain specimen near 0.015)
 RAMP = 0.02   # [s] the cell pressure and the axial load rise to p' over this time (a cell is filled, not struck)
@@ -83,7 +83,7 @@ class TriaxialTest(Cyclic, Experiment):
         rig.removeMould()
         O.engines = O.engines + [runtime.callback(self, 'press', iterPeriod=p['membranePeriod'], label=PRESS)]
         span, move, change = CONSOLIDATED
-        platen = preparation.still(rig.top, span, move, after=t0 + RAMP + span, unbalanced=REST)
+        platen = preparation.still(rig.top, span, move * self.membrane.height(), after=t0 + RAMP + span, unbalanced=REST)
         volumes = []
 
         def done():
@@ -105,7 +105,8 @@ class TriaxialTest(Cyclic, Experiment):
         cycles start from the specimen at rest under qMin, as a laboratory cycle does."""
         p = self.p
         t0 = self.tSeat = O.time
-        self.runUntil(preparation.still(self.rig.top, CONSOLIDATED[0], CONSOLIDATED[1], after=t0 + RAMP + CONSOLIDATED[0],
+        span, move, _ = CONSOLIDATED
+        self.runUntil(preparation.still(self.rig.top, span, move * self.membrane.height(), after=t0 + RAMP + span,
                                         unbalanced=REST), tEnd=t0 + p['consolidationTime'], phase='seat', checkEvery=100)
         self.say('seated at q = %g kPa in %.3g s: height %.4f m' % (p['qMin'] / 1e3, O.time - t0, self.membrane.height()))
 
