@@ -6,6 +6,7 @@ diametral planes and p' + qMin across mid-height within 5 % (1.2 % and 0.2 % mea
 import json
 import math
 import os
+import re
 
 import pandas as pd
 import pytest
@@ -20,7 +21,7 @@ from ballast.experiments.triaxial.strains import axialStrain, volumetricStrain  
 from test_triaxial_membrane import crossing  # noqa: E402
 
 SMALL = dict(diameter=0.12, height=0.24, dMin=0.02, dMax=0.03, layers=2, young=3e9, prepYoung=3e8, f=20.0, cycles=2,
-             progress=1e6)
+             vtk=1, progress=1e6)
 
 
 @pytest.fixture(scope='module')
@@ -47,6 +48,27 @@ def test_cycles_in_the_shared_schema(run):
     assert s['stepsPerCycle'] == c.stepsPerCycle.median()   # the steps the cycles took, not the period over dt
     for name in ('samples.csv', 'grading.csv', 'summary.json', 'strains.png', 'state-end.yade.gz'):
         assert os.path.getsize(os.path.join(folder, name)) > 0, name
+
+
+def test_vtk_frames_of_grains_contacts_and_membrane(run):
+    # a frame at the start of cycling, every cycle (a callback at simulated times) and at the end, once at a time (the
+    # end falls a sample after the last cycle's frame): grains, contacts, membrane
+    test, s, folder, _ = run
+    pvd = open(os.path.join(folder, 'triaxial.pvd')).read()
+    files = re.findall(r'file="([^"]+)"', pvd)
+    times = [f[0] for f in test.frames]
+    period = 1 / test.p['f']
+    assert times[:3] == pytest.approx([0, period, 2 * period], abs=1e-3 * period) and len(times) in (3, 4)
+    assert times == sorted(set(times)) and times[-1] >= 2 * period * (1 - 1e-3)
+    assert len(files) == 3 * len(test.frames)
+    assert all(os.path.getsize(os.path.join(folder, f)) > 0 for f in files)
+    membrane = open(os.path.join(folder, files[-1])).read()
+    points, cells = map(int, re.search(r'NumberOfPoints="(\d+)" NumberOfCells="(\d+)"', membrane).groups())
+    rho, _, _ = test.membrane.surface()
+    nZ, nT = rho.shape
+    assert (points, cells) == (nZ * nT, (nZ - 1) * nT)
+    R = test.p['diameter'] / 2
+    assert 0.8 * R < rho.mean() < 1.05 * R
 
 
 def test_strains_are_the_boundarys(run):

@@ -18,7 +18,7 @@ from yade import O, Vector3, plot
 from ... import runtime
 from ...params import requireWritableDir, validate
 from ...settlementlaws import bedChanged
-from .. import breakage, grains, preparation, scene
+from .. import breakage, chain, grains, preparation, scene
 from ..base import Experiment
 from ..cyclic import Cyclic, appendSample
 from . import outputs, specimen
@@ -26,7 +26,7 @@ from .membrane import Membrane
 from .parameters import OWNER, PARAMS, TriaxialParameters
 from .recorder import Recorder
 
-PRESS, SAMPLER = 'triaxialPress', 'triaxialSampler'
+PRESS, SAMPLER, FRAMES = 'triaxialPress', 'triaxialSampler', 'triaxialFrames'
 CONSOLIDATED = (0.02, 1e-5, 1e-5)   # ([s], [-], [-]): at rest when over that time the platen moved less than this
                                     # fraction of the height and the volume changed by less than this fraction
 REST = 0.02   # [-] YADE's unbalanced force at rest (the membrane's load, moved from grain to grain every membranePeriod
@@ -49,7 +49,7 @@ class TriaxialTest(Cyclic, Experiment):
         self.consolidated = None   # the specimen after consolidation: height, volume, porosity
         self.tConsolidate = None   # [s] when the pressure began to rise
         self.tSeat = None          # [s] when the deviator began to rise to qMin
-        self.initial, self.gradings = None, []
+        self.initial, self.gradings, self.frames = None, [], []
         self.target = None
         self.cycling = False
         Experiment.__init__(self, parameters, **params)
@@ -147,7 +147,21 @@ class TriaxialTest(Cyclic, Experiment):
         self.initial = {'massInitial': float(np.sum(m)), 'nGrainsInitial': len(r), 'diameters': grains.sieve()[0].tolist(),
                         'masses': m.tolist()}
         self.gradings = [breakage.grading(self, 0)]
+        self.startFrames()
         self.save(os.path.join(self.out, 'state-start.yade.gz'))
+
+    def startFrames(self):
+        """With vtk: a VTK frame now and every vtk load cycles (a callback at simulated times; a run reopened with vtk
+        gets it then)."""
+        if self.p['vtk'] > 0 and chain.engine(FRAMES) is None:
+            self.frame()
+            O.engines = O.engines + [runtime.callback(self, 'frame', virtPeriod=self.p['vtk'] * self.recorder.period,
+                                                      virtLast=O.time, label=FRAMES)]
+
+    def frame(self):
+        """A frame of triaxial.pvd (outputs.writeFrame), once at a time."""
+        if not self.frames or self.frames[-1][0] < O.time - self.recorder.t0:
+            outputs.writeFrame(self)
 
     def sample(self):
         """The recorder's sample; at a cycle's end its row, the grading after the cycles of the 1-2-5 series."""
@@ -186,6 +200,7 @@ class TriaxialTest(Cyclic, Experiment):
             self.dir.create()
             self.markRunning(continues=self.dir.previous)
         self.syncJumping()
+        self.startFrames()
         self.target = self.cyclesDone() + n
         return self.goOnToEnd()
 
@@ -205,6 +220,8 @@ class TriaxialTest(Cyclic, Experiment):
                               100 * (rec.samples[-1][6] if rec.samples else 0), rec.samples[-1][9] if rec.samples else 0))
         k = self.cyclesDone()
         self.grade(k)
+        if p['vtk'] > 0:
+            self.frame()   # the last
         s = self.finishRun(lambda: outputs.write(self))
         self.say('done: %d cycles, axial strain %.3f %%, volumetric %.3f %%, %d crushed, %d abraded; results in %s' % (
             k, 100 * s['axialStrain'], 100 * s['volumetricStrain'], s['nCrushed'], s['nAbraded'], self.out))
@@ -218,7 +235,7 @@ class TriaxialTest(Cyclic, Experiment):
         return dict(self.baseState(), rig=runtime.ref(self.rig), membrane=runtime.ref(self.membrane),
                     recorder=runtime.ref(self.recorder), jumper=runtime.ref(self.jumper),
                     stepChoice=runtime.ref(self.stepChoice), porosity=self.porosity, specimenFile=self.specimenFile,
-                    consolidated=self.consolidated, tConsolidate=self.tConsolidate, tSeat=self.tSeat, initial=self.initial, gradings=self.gradings, target=self.target,
+                    consolidated=self.consolidated, tConsolidate=self.tConsolidate, tSeat=self.tSeat, initial=self.initial, gradings=self.gradings, frames=self.frames, target=self.target,
                     cycling=self.cycling)
 
     @classmethod
@@ -228,6 +245,7 @@ class TriaxialTest(Cyclic, Experiment):
         exp.rig, exp.membrane, exp.recorder = ref(s['rig']), ref(s['membrane']), ref(s['recorder'])
         exp.jumper = ref(s['jumper']) if s.get('jumper') is not None else None
         exp.stepChoice = ref(s['stepChoice']) if s.get('stepChoice') is not None else None
-        for k in ('porosity', 'specimenFile', 'consolidated', 'tConsolidate', 'tSeat', 'initial', 'gradings', 'target', 'cycling'):
+        for k in ('porosity', 'specimenFile', 'consolidated', 'tConsolidate', 'tSeat', 'initial', 'gradings', 'frames',
+                  'target', 'cycling'):
             setattr(exp, k, s[k])
         return exp

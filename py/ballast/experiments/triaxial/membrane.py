@@ -38,17 +38,28 @@ class Membrane:
         """The distance between the platens' faces [m]."""
         return O.bodies[self.top].state.pos[2] - O.bodies[self.bottom].state.pos[2]
 
-    def update(self):
-        """The pressure's load worked out for the grains as they are and set as their permanent forces; the grains
-        it left since the last update get none."""
+    def grid(self):
+        """(cells around, cells along) for the grains as they are: cells of about `cell` [m] over the outermost reach
+        and between the platens."""
         kind = grains.kind()
         ids = kind.ids()
         x, r = kind.centres(ids), kind.radii(ids)
-        z0, z1 = O.bodies[self.bottom].state.pos[2], O.bodies[self.top].state.pos[2]
         reach = float(np.max(np.hypot(x[:, 0], x[:, 1]) + r)) if len(r) else self.cell
-        out = _ballast.membraneLoad(x, r, self.pressure, 0.0, 0.0, z0, z1,
-                                    max(3, int(round(2 * math.pi * reach / self.cell))),
-                                    max(1, int(round((z1 - z0) / self.cell))), self.depth)
+        return x, r, max(3, int(round(2 * math.pi * reach / self.cell))), max(1, int(round(self.height() / self.cell)))
+
+    def surface(self):
+        """The membrane's shape now: (radius [m] per cell (nZ, nTheta), the platens' faces z0, z1 [m])."""
+        x, r, nT, nZ = self.grid()
+        z0, z1 = O.bodies[self.bottom].state.pos[2], O.bodies[self.top].state.pos[2]
+        return _ballast.membraneLoad(x, r, self.pressure, 0.0, 0.0, z0, z1, nT, nZ, self.depth)['radius'], z0, z1
+
+    def update(self):
+        """The pressure's load worked out for the grains as they are and set as their permanent forces; the grains
+        it left since the last update get none."""
+        ids = grains.kind().ids()
+        x, r, nT, nZ = self.grid()
+        z0, z1 = O.bodies[self.bottom].state.pos[2], O.bodies[self.top].state.pos[2]
+        out = _ballast.membraneLoad(x, r, self.pressure, 0.0, 0.0, z0, z1, nT, nZ, self.depth)
         force = out['force']
         carried = np.flatnonzero(force[:, 0] != 0.0)   # a carried cell always has a horizontal force
         now = ids[carried].tolist()

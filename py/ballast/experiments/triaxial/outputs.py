@@ -9,6 +9,7 @@
 * grading.csv   percentage passing each sieve after cycles 0, 1, 2, 5, 10, ... and the last, with B_g, B_r and BBI
 * summary.json  the run: strains, the specimen (porosity in the mould and consolidated), crushes, the mass ledger, CPU
 * strains.png   permanent axial and volumetric strain against N (log N), the measured curves of `reference` over them
+* triaxial.pvd  with vtk: the grains, the contacts and the membrane every vtk cycles and at the end (ParaView)
 """
 import json
 import math
@@ -22,6 +23,7 @@ from ... import grading as gr
 from ...engines import BallastAbrasionEngine, BallastCrushEngine
 from ...runfiles import saveFigure, strictJson, writeAtomic
 from .. import cyclic, grains
+from ..vtk import dataArray, unstructuredGrid, writeContactsVtu, writePvd
 from ..breakage import engines, massLost
 from .recorder import Recorder
 
@@ -81,7 +83,35 @@ def write(exp):
         writeAtomic(os.path.join(out, name), df.to_csv(index=False, float_format='%.9g'))
     writeAtomic(os.path.join(out, 'summary.json'), json.dumps(strictJson(s), indent=1) + '\n')
     figure(cyc, os.path.join(out, 'strains.png'), exp.p.references())
+    if exp.frames:
+        writePvd(os.path.join(out, 'triaxial.pvd'), exp.frames)
     return s
+
+
+def writeFrame(exp):
+    """VTK files of the grains, the contacts and the membrane now (named by the step); a frame of triaxial.pvd,
+    written again with it (a killed run keeps its series). The membrane is a quad mesh through its cells' centres at
+    its radius there (point data: that radius [m])."""
+    out = os.path.join(exp.out, 'vtk')
+    os.makedirs(out, exist_ok=True)
+    x, r, ids = grains.vtk()
+    n = len(r)
+    names = ['%s-%09d.vtu' % (part, O.iter) for part in ('grains', 'contacts', 'membrane')]
+    unstructuredGrid(os.path.join(out, names[0]), x, np.arange(n), np.arange(1, n + 1), np.ones(n, dtype=int),
+                     dataArray('radius', r) + dataArray('mass', grains.kind().masses(ids)))
+    writeContactsVtu(os.path.join(out, names[1]))
+    rho, z0, z1 = exp.membrane.surface()
+    nZ, nT = rho.shape
+    theta = (np.arange(nT) + 0.5) * 2 * np.pi / nT
+    z = z0 + (np.arange(nZ) + 0.5) * (z1 - z0) / nZ
+    pts = np.column_stack([(rho * np.cos(theta)).ravel(), (rho * np.sin(theta)).ravel(), np.repeat(z, nT)])
+    k, j = np.meshgrid(np.arange(nZ - 1), np.arange(nT), indexing='ij')   # a quad between rows k, k+1, columns j, j+1
+    a, b = k * nT + j, k * nT + (j + 1) % nT
+    quads = np.column_stack([a.ravel(), b.ravel(), (b + nT).ravel(), (a + nT).ravel()])
+    unstructuredGrid(os.path.join(out, names[2]), pts, quads.ravel(), 4 * np.arange(1, len(quads) + 1),
+                     np.full(len(quads), 9), dataArray('radius', rho.ravel()))   # VTK_QUAD
+    exp.frames.append([O.time - exp.recorder.t0] + ['vtk/' + k for k in names])
+    writePvd(os.path.join(exp.out, 'triaxial.pvd'), exp.frames)
 
 
 def figure(cycles, path, references=()):
