@@ -62,3 +62,14 @@ def test_the_parameters_refuse_a_bad_history_before_any_work(tmp_path):
         check({'seatLoad': 5e4})
     with pytest.raises(LoadHistoryError, match='expected 0 <= seat < peak and f > 0'):
         LoadHistory.sine(5.0, 4.0, 1.0)
+
+
+def test_a_load_option_the_history_overrides_is_refused(tmp_path):
+    # --loadFile F --peakLoad 9999: the peak would be the history's; the run would report a peak it never applied
+    path = tmp_path / 'passage.csv'
+    path.write_text('t,F\n0,1000\n0.1,5000\n0.2,1000\n')
+    assert check({'loadFile': str(path)}).history().peak == 5000
+    for k, v in (('peakLoad', 9999.0), ('seatLoad', 500.0), ('f', 2.0)):
+        with pytest.raises(ParamError, match='%s = %r is not allowed: is not used with loadFile' % (k, v)) as e:
+            check({'loadFile': str(path), k: v})
+        assert e.value.name == k

@@ -140,6 +140,10 @@ class BoxParameters(ExperimentParameters):
         if p['continueFrom'] and not os.path.isfile(p['continueFrom']):
             bad('continueFrom', 'no such state file')
         if p['loadFile']:
+            for k in ('seatLoad', 'peakLoad', 'f'):   # the history gives the loads and the period: a value set is lost
+                if p[k] != PARAMS[k].default:
+                    bad(k, 'is not used with loadFile = %r: the load history gives the loads and the period (leave %s '
+                           'out, or leave loadFile out for the sine)' % (p['loadFile'], k))
             if not os.path.isfile(p['loadFile']):
                 bad('loadFile', 'no such file')
             try:
