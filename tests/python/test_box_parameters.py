@@ -44,3 +44,11 @@ def test_the_bed_key_changes_with_what_decides_the_bed_only():
     assert bedKey(check({'seed': 2}))[1] != base and bedKey(check({'layerPressure': 5e4}))[1] != base
     assert bedKey(check({'peakLoad': 30e3, 'f': 5.0, 'fatigue': True}))[1] == base   # the load is not the bed
     assert set(BED_KEYS) <= set(PARAMS)
+
+
+def test_a_box_of_more_grains_than_a_run_may_take_is_refused():
+    # 1000 x 0.3 x 0.3 m at solid fraction 0.6: 54 m^3 of grains of mean volume pi/6 E[d^3] (d uniform in
+    # 20.5-44.5 mm: pi/6 (dMax^4 - dMin^4) / (4 (dMax - dMin)) = 2.04e-5 m^3): 2.6e6 grains, above 1e6
+    with pytest.raises(ParamError, match=r'boxLength = 1000.0 is not allowed: a sample of 90 m\^3 holds about 2.6e\+06'):
+        check({'boxLength': 1e3})
+    check({'boxLength': 2.0})   # 0.18 m^3: 5 300 grains

@@ -73,6 +73,7 @@ def test_parameters_cross_checks(tmp_path):
     assert p.deviator(0.2) == pytest.approx(45e3)
     for bad, name in (({'qMin': 230e3}, 'qMin'), ({'diameter': 0.15}, 'diameter'), ({'height': 1.0}, 'height'),
                       ({'membraneCell': 0.05}, 'membraneCell'), ({'layers': 30}, 'layers'),
+                      ({'diameter': 20.0, 'height': 20.0}, 'diameter'),
                       ({'reference': write(tmp_path, 'N,x\n')}, 'reference')):
         with pytest.raises(ParamError, match='TriaxialTest: %s = ' % name):
             check(bad)

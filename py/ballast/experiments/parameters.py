@@ -19,6 +19,7 @@ PHI = 'a number in [0, pi/2)'   # the allowed range of a friction angle, in word
 # A run must end and resolve its cycles: bounds every cyclic experiment checks before any work.
 MAX_LOADING_STEPS = 1e9     # [steps] cycles / f / dt at the start; 1e9 steps are days of CPU (3e5 at 8 Hz, 1 cycle)
 MIN_STEPS_PER_CYCLE = 100   # [steps] a cycle resolved by fewer time steps is not a load cycle
+MAX_GRAINS = 1e6            # [grains] a sample YADE can step on one core (1 s of CPU a step at 1 us a grain-step)
 
 
 def take(group, *names):
@@ -233,6 +234,15 @@ class ExperimentParameters(Parameters):
         if self['rollingFriction'] > 0 and self['law'] != 'linear':
             self.bad('rollingFriction', "needs law = 'linear' (YADE's moment law on the linear contact), got law = %r"
                      % self['law'])
+
+    def checkGrainCount(self, volume, name):
+        """A sample of `volume` [m^3] at its layers' solidFraction holds at most MAX_GRAINS grains of [dMin, dMax]
+        (else the parameter `name`, which sets the volume, is named), before any preparation."""
+        from ..geometry import meanCubedDiameterVolume
+        n = self['solidFraction'] * volume / meanCubedDiameterVolume(self['dMin'], self['dMax'])
+        if n > MAX_GRAINS:
+            self.bad(name, 'a sample of %.3g m^3 holds about %.2g grains of %g-%g m, more than the %.0e a run may take' % (
+                volume, n, self['dMin'], self['dMax'], MAX_GRAINS))
 
     def checkDensityStep(self):
         """densityStep 0, or at least the paper's step (startTimeStep) with timeStep pwave; the quasi-static option

@@ -6,7 +6,7 @@ DECLARATION = Declaration(
     name='box', owner=OWNER, params=PARAMS,
     title='The box test (`BoxTest(...)`, `--name value`, table columns)',
     bounds=['`dMin` < `dMax`; the bed at least 2 `dMax` deep, each layer at least `dMax`; the box at least 3 `dMax` '
-            'wide; at least 2 `dMax` of ballast beside the sleeper; `seatLoad` < `peakLoad`.',
+            'wide; at least 2 `dMax` of ballast beside the sleeper; `seatLoad` < `peakLoad`; at most 1e6 grains.',
             'A cycle spans at least 100 time steps; a run at most 1e9; `Tc` and `abrasionPeriod` within a cycle.',
             '`loadFile`: read and checked with the parameters (the row of a fault named).',
             '`results` and the bed store (`bedDir`, default `<results>/beds`) are created and written to before the '

@@ -129,6 +129,7 @@ class BoxParameters(ExperimentParameters):
         if p['sleeperWidth'] > p['boxLength'] - 4 * p['dMax']:
             bad('sleeperWidth', 'leaves less than 2 dMax of ballast on either side in a box of length %g m (at most %g m)'
                 % (p['boxLength'], p['boxLength'] - 4 * p['dMax']))
+        self.checkGrainCount(p['boxLength'] * p['boxWidth'] * p['bedDepth'], 'boxLength')
         if p['cribDepth'] > p['sleeperHeight']:
             bad('cribDepth', 'higher than the sleeper, sleeperHeight = %g m' % p['sleeperHeight'])
         if p['sleeperGap'] * 2 >= p['boxWidth']:

@@ -6,7 +6,7 @@ DECLARATION = Declaration(
     name='triaxial', owner=OWNER, params=PARAMS,
     title='The cyclic triaxial test (`TriaxialTest(...)`, `--name value`, table columns)',
     bounds=['`dMin` < `dMax`; the specimen at least 4 `dMax` across, 2/3 to 3 times as high as wide, each layer at '
-            'least `dMax`; `qMin` < `qMax`; `membraneCell` between `dMin` / 20 and `dMax`.',
+            'least `dMax`; `qMin` < `qMax`; `membraneCell` between `dMin` / 20 and `dMax`; at most 1e6 grains.',
             'A cycle spans at least 100 time steps; a run at most 1e9; `Tc` and `abrasionPeriod` within a cycle.',
             '`reference`: each file read and checked with the parameters (the line of a fault named).',
             '`results` and the specimen store (`specimenDir`, default `<results>/specimens`) are created and written '

@@ -125,6 +125,7 @@ class TriaxialParameters(ExperimentParameters):
         if p['height'] / p['layers'] < p['dMax']:
             bad('layers', 'layers of %.3g m are thinner than the largest grain dMax = %g m' % (
                 p['height'] / p['layers'], p['dMax']))
+        self.checkGrainCount(math.pi * p['diameter'] ** 2 / 4 * p['height'], 'diameter')
         if p['qMin'] >= p['qMax']:
             bad('qMin', 'must be smaller than qMax = %g Pa' % p['qMax'])
         if p['membraneCell'] > p['dMax']:
