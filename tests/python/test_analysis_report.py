@@ -166,3 +166,14 @@ def test_a_real_tiny_box_study_and_single_particle_study_aggregate(tmp_path):
         assert float(stats[0]['%s_mean [%s]' % (response, unit)]) == pytest.approx((s[0][response] + s[1][response]) / 2,
                                                                                    rel=1e-12)
         assert os.path.getsize(os.path.join(study, 'aggregate', 'response.png')) > 10000
+
+
+def test_a_study_whose_other_parameters_vary_too_reports_without_the_blocked_test(tmp_path, capsys):
+    # the box study of the variants (docs/studies/box-sg): seed 1 runs with fatigue on and keep none and volume, so
+    # within seeds there are no blocks of one run per value; the test across values is made, the blocked one is not
+    records = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', 'docs', 'studies', 'box-sg')
+    aggregate(records, 'fatigue', str(tmp_path), figures=False)
+    test = json.load(open(tmp_path / 'test.json'))
+    assert test['test'] == 'Kruskal-Wallis' and test['runs'] == 11
+    assert 'holds 2 runs of seed 1' in test['blocked']['skipped']
+    assert 'Friedman across fatigue within seeds: not made' in capsys.readouterr().out

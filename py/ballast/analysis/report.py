@@ -49,8 +49,15 @@ def tests(data):
     if test is None:
         return None
     alpha, power = test['alpha'], test['power']
-    return dict(test, blocked=blockedTest(data, alpha=alpha, power=power),
-                **{key: blockedTest(data, name, alpha, power) for key, (name, _) in data.declaration.tested.items()})
+
+    def blocked(quantity=None):
+        # within seeds a seed is one realization at every value: a study whose other parameters vary too (two runs
+        # of a seed at one value) has no such blocks; the test across values above stands
+        try:
+            return blockedTest(data, quantity, alpha, power)
+        except ValueError as e:
+            return {'test': 'Friedman', 'skipped': str(e)}
+    return dict(test, blocked=blocked(), **{key: blocked(name) for key, (name, _) in data.declaration.tested.items()})
 
 
 def trend(t):
@@ -80,13 +87,15 @@ def say(data, test):
                  amount(data, r, test[detectable]),
                  test['power'], test['alpha'])]
     blocked = test['blocked']
-    if blocked is not None:
+    if blocked is not None and 'skipped' in blocked:
+        lines.append('Friedman across %s within seeds: not made (%s)' % (data.param, blocked['skipped']))
+    elif blocked is not None:
         lines.append('Friedman across %s within seeds: chi2 = %.3g, p = %.3g (%d seeds complete); detectable difference '
                      '%s%s' % (data.param, blocked['chi2'], blocked['p'], blocked['seeds'],
                                amount(data, r, blocked[detectable]), trend(blocked)))
     for key, (_, words) in data.declaration.tested.items():
         t = test[key]
-        if t is not None:
+        if t is not None and 'skipped' not in t:
             lines.append('%s, within seeds: Friedman p = %.3g (%d seeds)%s' % (words, t['p'], t['seeds'], trend(t)))
     return lines
 
