@@ -133,6 +133,15 @@ def saveFigure(fig, path, dpi=120):
     writeAtomic(path, buf.getvalue())
 
 
+def plainLogTicks(ax):
+    """A log x axis labelled 1, 2, 3, 5, 10, 20, ... (matplotlib's default gives 2x10^0, 3x10^0 where a decade is
+    short), the other minor ticks unlabelled."""
+    from matplotlib.ticker import FuncFormatter
+    label = FuncFormatter(lambda v, _: ('%g' % v) if v > 0 and ('%.0e' % v)[0] in '1235' else '')
+    ax.xaxis.set_major_formatter(label)
+    ax.xaxis.set_minor_formatter(label)
+
+
 def runStatus(runDir):
     """run.json of a run's folder (what :meth:`ballast.experiments.base.Experiment.markRunning` and its saves
     write) as a dict, or None when there is none or it does not parse."""

@@ -208,7 +208,7 @@ def figure(frame, fits, path, marks=None):
     import matplotlib
     matplotlib.use('Agg')
     import matplotlib.pyplot as plt
-    from ..runfiles import saveFigure
+    from ..runfiles import plainLogTicks, saveFigure
     apart = readApart(frame)
     split = bool(apart.any())
     if split:
@@ -257,5 +257,6 @@ def figure(frame, fits, path, marks=None):
     for a in axes:
         a.grid(True, which='both', alpha=0.3)
         a.legend(fontsize=7)
+    plainLogTicks(axes[-1])   # the axes share x
     saveFigure(fig, path)
     return path

@@ -29,7 +29,7 @@ from yade import O
 
 from ... import grading as gr
 from ...engines import BallastAbrasionEngine, BallastCrushEngine
-from ...runfiles import saveFigure, strictJson, writeAtomic
+from ...runfiles import plainLogTicks, saveFigure, strictJson, writeAtomic
 from .. import cyclic, grains
 from ..breakage import engines, massLost
 from ..vtk import dataArray, unstructuredGrid, writeContactsVtu, writePvd
@@ -149,6 +149,8 @@ def figures(exp, files):
             ax.semilogx(cyc.cycle, 1e3 * (cyc.settlement + cyc.settlementJumped), 'x:', ms=3,
                         label='with the jumped cycles\' settlement extrapolated (a + b ln n)')
     ax.set_xlabel('load cycles N')
+    if len(cyc):
+        plainLogTicks(ax)
     ax.set_ylabel('sleeper displacement [mm]')
     ax.set_title('Box test: %.3g-%.3g kN, %s' % (p.history().seat / 1e3, p.history().peak / 1e3, exp.runId), fontsize=9)
     ax.grid(True, which='both', alpha=0.3)

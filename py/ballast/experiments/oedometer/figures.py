@@ -5,7 +5,7 @@ import os
 import numpy as np
 
 from ... import grading
-from ...runfiles import saveFigure
+from ...runfiles import plainLogTicks, saveFigure
 
 
 def cyclesFigure(exp, table):
@@ -21,6 +21,7 @@ def cyclesFigure(exp, table):
                     label="with the jumped cycles' settlement (a + b ln n)")
         ax.legend(fontsize=8, loc='upper left')
     ax.set_xlabel('load cycles N')
+    plainLogTicks(ax)
     ax.set_ylabel('settlement [mm]', color='C0')
     ax.grid(alpha=0.3, which='both')
     ax2 = ax.twinx()

@@ -21,7 +21,7 @@ from yade import O
 
 from ... import grading as gr
 from ...engines import BallastAbrasionEngine, BallastCrushEngine
-from ...runfiles import saveFigure, strictJson, writeAtomic
+from ...runfiles import plainLogTicks, saveFigure, strictJson, writeAtomic
 from .. import cyclic, grains
 from ..vtk import dataArray, unstructuredGrid, writeContactsVtu, writePvd
 from ..breakage import engines, massLost
@@ -120,7 +120,6 @@ def figure(cycles, path, references=()):
     import matplotlib
     matplotlib.use('Agg')
     import matplotlib.pyplot as plt
-    from matplotlib.ticker import FuncFormatter
     fig, axes = plt.subplots(2, 1, figsize=(6.4, 6.4), sharex=True)
     N = cycles.cycle.to_numpy()
     for ax, kind, column in ((axes[0], 'axial', 'axialStrain'), (axes[1], 'volumetric', 'volumetricStrain')):
@@ -128,8 +127,7 @@ def figure(cycles, path, references=()):
         for k, (refKind, Nr, er) in enumerate(r for r in references if r[0] == kind):
             ax.semilogx(Nr, 100 * er, 's--', ms=3, color='k', label='measured' if k == 0 else None)
         ax.set_ylabel('%s strain [%%]%s' % (kind, ' (compression +)' if kind == 'volumetric' else ''))
-        for axis in (ax.xaxis.set_major_formatter, ax.xaxis.set_minor_formatter):   # 2, 3, 20: not 2x10^0
-            axis(FuncFormatter(lambda v, _: '%g' % v if ('%.0e' % v)[0] in '1235' else ''))
+        plainLogTicks(ax)
         ax.grid(True, which='both', alpha=0.3)
         ax.legend(loc='upper left')
     axes[1].set_xlabel('load cycles N')
