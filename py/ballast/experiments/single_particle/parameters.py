@@ -8,6 +8,7 @@ from ..parameters import (CONTACT, DENSITY_STEP, ENGINES, GRAINS, INTEGRATION, R
                           ExperimentParameters, take)
 from .closedform import crushingForce
 
+DIAMETERS = (1e-3, 0.3)   # [m] the sizes of ballast grains (EN 13450: 22.4-63 mm) and of the fragments they give
 OWNER = 'SingleParticle'
 
 PARAMS = {
@@ -61,15 +62,24 @@ class SingleParticleParameters(ExperimentParameters):
         self.checkSizes()
         if p['diameters'] and p['n'] != PARAMS['n'].default and p['n'] != len(p['diameters']):
             bad('n', 'given with %d diameters: give one or the other' % len(p['diameters']))
-        # the platens of one grain close by maxStrain d at speed: at least 100 steps (a loading, not a blow)
+        lo, hi = DIAMETERS
+        odd = [d for d in p['diameters'] if not lo <= d <= hi]
+        if odd:
+            bad('diameters', '%g m is outside %g-%g m, the sizes of ballast grains and their fragments (diameters are '
+                             'in metres: 30 mm is 0.03)' % (odd[0], lo, hi))
+        # the platens of one grain close by maxStrain d at speed: at least 100 steps (a loading, not a blow), and the
+        # largest grain at the step of the smallest at most 1e8
         self.checkDensityStep()
         dt = self.loadingTimeStep()
         steps = p['maxStrain'] * self.smallestDiameter() / p['speed'] / dt
         if steps < 100:
             bad('speed', 'closes the smallest grain by maxStrain in %.3g time steps of %.3g s, fewer than 100: not '
                          'a quasi-static test' % (steps, dt))
-        if steps > 1e8:
-            bad('speed', 'takes %.3g time steps to close the smallest grain by maxStrain, more than 1e8' % steps)
+        largest = max(p['diameters']) if p['diameters'] else p['dMax']
+        most = p['maxStrain'] * largest / p['speed'] / dt
+        if most > 1e8:
+            bad('speed', 'takes %.3g time steps of %.3g s (the smallest grain\'s step) to close the largest grain by '
+                         'maxStrain, more than 1e8' % (most, dt))
 
 
 def check(values, text=False):
