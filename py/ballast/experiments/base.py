@@ -37,10 +37,10 @@ from ..engines import BallastAbrasionEngine, BallastCrushEngine
 from ..names import runDirName
 from ..engineparams import CRUSH
 from ..params import ParamError, requireWritableDir
-from ..runfiles import killedRunState, runStatus, syncDir
+from ..runfiles import runStatus, syncDir
 from . import chain, quasistatic, timestep
 from .phases import Phases
-from .rundir import RunDirectory, StateFileError, checkStateFile, processAlive
+from .rundir import RunDirectory, StateFileError, checkStateFile, processAlive, resumableState
 
 PARAM_UNITS = 2   # the saved parameters' units: 2 since saveEvery and vtk count load cycles (2026-12)
 LOADED_STIFFNESS_MARGIN = 2.0  # [-] densityStep: the loading body's contacts may stiffen this much as grains crush
@@ -304,10 +304,16 @@ class Experiment:
         if not p.get('resume'):
             return None
         folder = os.path.join(p['results'], runDirName(p['runId']))
-        state = killedRunState(folder)
+        state, why = resumableState(folder)
         if state is None:
-            self.say('resume: no killed run with a saved state in %s: the run starts afresh' % folder)
-            return None
+            if why in ('no such folder', 'the run finished') or not any(
+                    n.startswith('state-') for n in os.listdir(folder)):
+                self.say('resume: no killed run with a saved state in %s (%s): the run starts afresh' % (folder, why))
+                return None
+            raise ParamError('resume', '%s: resume = 1 is not allowed: the killed run in %s cannot go on: %s' % (
+                self.Parameters.OWNER, folder, why))
+        if why:
+            self.say('resume: %s' % why)
         doc = runStatus(folder)
         if doc.get('host') == socket.gethostname() and processAlive(doc.get('pid')):
             raise ParamError('resume', '%s: resume = 1 is not allowed: the run in %s is alive (pid %d); stop it first' % (

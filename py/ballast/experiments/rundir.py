@@ -52,6 +52,49 @@ def checkStateFile(path, who='reopen'):
         bad('its content is not a YADE state (neither XML nor a boost archive: it starts with %r)' % head[:16])
 
 
+TEMPORARY_PREFIX = '.tmp-'   # a state being written (Experiment.save): .tmp-<pid>-<name>, renamed when whole
+
+
+def resumableState(folder):
+    """The state a killed run in `folder` goes on from: (path, what was wrong with the obvious one, or None), or
+    (None, why not). The obvious one is run.json's lastState; when run.json is damaged or names none, or that state
+    is damaged (checkStateFile), the newest intact state-*.yade.gz of the folder (by time). A finished run (run.json
+    'finished', or summary.json beside no 'running') is not resumed. Temporary files of a save a kill cut off are
+    removed."""
+    from ..runfiles import runStatus
+    if not os.path.isdir(folder):
+        return None, 'no such folder'
+    for name in os.listdir(folder):
+        if name.startswith(TEMPORARY_PREFIX):
+            os.remove(os.path.join(folder, name))
+    doc = runStatus(folder)
+    status = doc.get('status') if doc else None
+    if status == 'finished' or (status != 'running' and os.path.exists(os.path.join(folder, 'summary.json'))):
+        return None, 'the run finished'
+    problems = []
+    if doc is None:
+        problems.append('run.json is missing or damaged')
+    last = os.path.basename(doc['lastState']) if doc and isinstance(doc.get('lastState'), str) else None
+    if doc is not None and last is None:
+        problems.append('run.json names no last state')
+    states = [n for n in os.listdir(folder) if n.startswith('state-') and n.endswith('.yade.gz')]
+    order = sorted(states, key=lambda n: os.path.getmtime(os.path.join(folder, n)), reverse=True)
+    if last in order:
+        order.remove(last)
+        order.insert(0, last)
+    elif last is not None:
+        problems.append('its last state %s is not there' % last)
+    for name in order:
+        path = os.path.join(folder, name)
+        try:
+            checkStateFile(path, 'resume')
+        except StateFileError as e:
+            problems.append(str(e).split(': ', 1)[1])
+            continue
+        return path, ('; '.join(problems) + ': going on from %s' % name) if problems else None
+    return None, '; '.join(problems + ['no intact state in it'])
+
+
 def processAlive(pid):
     """True if pid (an int) is a live process of this machine other than this one."""
     if not isinstance(pid, int) or pid <= 0 or pid == os.getpid():
