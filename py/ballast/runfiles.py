@@ -134,12 +134,21 @@ def saveFigure(fig, path, dpi=120):
 
 
 def plainLogTicks(ax):
-    """A log x axis labelled 1, 2, 3, 5, 10, 20, ... (matplotlib's default gives 2x10^0, 3x10^0 where a decade is
-    short), the other minor ticks unlabelled."""
+    """A log x axis labelled in plain numbers: 1, 2, 3, 5, 10, 20, ... over at most 2.5 decades (matplotlib's default
+    gives 2x10^0, 3x10^0 there), the decades only (1, 10, 100, ...) over more; the other ticks unlabelled."""
+    import math
     from matplotlib.ticker import FuncFormatter
-    label = FuncFormatter(lambda v, _: ('%g' % v) if v > 0 and ('%.0e' % v)[0] in '1235' else '')
-    ax.xaxis.set_major_formatter(label)
-    ax.xaxis.set_minor_formatter(label)
+
+    def label(v, _):
+        if not v > 0:
+            return ''
+        lo, hi = ax.get_xlim()
+        if abs(math.log10(v) - round(math.log10(v))) < 1e-9:
+            return '%g' % v
+        few = lo > 0 and math.log10(hi / lo) <= 2.5
+        return '%g' % v if few and ('%.0e' % v)[0] in '235' else ''
+    ax.xaxis.set_major_formatter(FuncFormatter(label))
+    ax.xaxis.set_minor_formatter(FuncFormatter(label))
 
 
 def runStatus(runDir):
