@@ -38,9 +38,11 @@ MembraneLoad membraneLoad(const MembraneGrid& g, long n, const double* centres, 
 		requireFinite("centres", 3 * i + 1, y);
 		requireFinite("centres", 3 * i + 2, z);
 		// the cells whose centre's ray can meet this sphere: z_c within r of its centre, theta_c within its silhouette
-		const long kz0 = std::max(0L, static_cast<long>(std::ceil((z - r - g.z0) / dz - 0.5)));
-		const long kz1 = std::min(g.nZ - 1, static_cast<long>(std::floor((z + r - g.z0) / dz - 0.5)));
-		if (kz0 > kz1) continue;
+		// clamped as doubles before the cast: far-off or huge grains give infinities (NaN fails the test too)
+		const double zLo = std::ceil((z - r - g.z0) / dz - 0.5), zHi = std::floor((z + r - g.z0) / dz - 0.5);
+		if (!(zLo <= zHi && zHi >= 0 && zLo <= g.nZ - 1)) continue;
+		const long kz0 = static_cast<long>(std::max(0.0, zLo));
+		const long kz1 = static_cast<long>(std::min(static_cast<double>(g.nZ - 1), zHi));
 		const double rc = std::hypot(x, y);
 		long         kt0 = 0, kt1 = g.nTheta - 1;  // a sphere around the axis: every direction
 		if (rc > r) {
@@ -114,6 +116,9 @@ MembraneLoad membraneLoad(const MembraneGrid& g, long n, const double* centres, 
 			out.volume += 0.5 * rho * rho * dth * dz;
 		}
 	}
+	// radii or centres too large for doubles (or a pressure that overflows them) give no load to trust
+	requireFiniteResult("centres, radii, pressure", "membrane load", pressure * out.area);
+	requireFiniteResult("centres, radii", "enclosed volume", out.volume);
 	return out;
 }
 

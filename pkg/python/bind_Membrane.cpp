@@ -1,6 +1,7 @@
 // Binding of Membrane.hpp: the membrane's load on a triaxial specimen's grains, arrays in and out.
 #include <cstring>
 
+#include "../InputCheck.hpp"
 #include "../Membrane.hpp"
 #include "Convert.hpp"
 
@@ -8,9 +9,15 @@ namespace ballast {
 namespace binding {
 
 namespace {
-	long asCount(const bp::object& obj, const std::string& name)
+	const long kMaxCells = 100000000L;  // cells around or along: more than any specimen needs (the core bounds both)
+
+	long asCount(const bp::object& obj, const std::string& name, long lowest)
 	{
-		return bp::extract<long>(asInteger(obj, name, "a whole number"));
+		const std::string range = "an integer in [" + std::to_string(lowest) + ", 1e8]";
+		const bp::object  v     = asInteger(obj, name, range);
+		if (!bp::extract<bool>(v >= lowest)() || !bp::extract<bool>(v <= kMaxCells)())  // before a C long holds it
+			throw ArgumentError(name + ": expected " + range + ", got " + pyStr(v));
+		return bp::extract<long>(v);
 	}
 
 	bp::dict membraneLoadOf(const bp::object& centres, const bp::object& radii, const bp::object& pressure,
@@ -18,8 +25,8 @@ namespace {
 	                        const bp::object& nTheta, const bp::object& nZ, const bp::object& depth)
 	{
 		const MembraneGrid g = MembraneGrid::checked(asScalar(axisX, "axisX"), asScalar(axisY, "axisY"),
-		                                             asScalar(z0, "z0"), asScalar(z1, "z1"), asCount(nTheta, "nTheta"),
-		                                             asCount(nZ, "nZ"), asScalar(depth, "depth"));
+		                                             asScalar(z0, "z0"), asScalar(z1, "z1"), asCount(nTheta, "nTheta", 3),
+		                                             asCount(nZ, "nZ", 1), asScalar(depth, "depth"));
 		np::ndarray c = asDoubles(centres, "centres");
 		const long  n = requireShape(c, "centres", {-1, 3}, "an (N,3) array of grain centres");
 		np::ndarray r = asDoubles(radii, "radii");

@@ -28,6 +28,7 @@ BY_FILE = {
     'Types': {'matricesToArray', '_fastMatrixPath'},
     'DensityScaling': {'pWaveStep', 'densityScaling'},
     'InertialNumber': {'inertialNumber'},
+    'Membrane': {'membraneLoad'},
 }
 
 

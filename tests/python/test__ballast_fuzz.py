@@ -334,6 +334,32 @@ def inertialNumber(g):
     return kw, elementwiseCheck(kw, lambda rate, d, rho, p: np.abs(rate) * d * np.sqrt(rho / p))
 
 
+def membraneLoad(g):
+    # grains near a cylinder of radius R around the axis, the membrane between z0 = 0 and z1 = 0.6
+    n = int(g.rng.integers(0, 6))
+    R, theta = g.rng.uniform(0.05, 0.3), g.rng.uniform(0, 2 * np.pi, n)
+    c = np.column_stack([R * np.cos(theta), R * np.sin(theta), g.rng.uniform(0, 0.6, n)])
+    kw = dict(centres=g.array(c), radii=g.array(g.rng.uniform(0.01, 0.05, n)), pressure=g.number(float(g.magnitude())),
+              axisX=g.number(0.0), axisY=g.number(0.0), z0=g.number(0.0), z1=g.number(0.6),
+              nTheta=g.integer(int(g.rng.integers(3, 40))), nZ=g.integer(int(g.rng.integers(1, 30))),
+              depth=g.number(float(g.rng.uniform(0, 0.02))))
+
+    def check(out):
+        # the area is the sum over the cells carried of rho dtheta dz; no axial force; owners are grains or -1
+        x = {k: asFloat(v) for k, v in kw.items()}
+        if x['centres'].shape != (n, 3) or not moderate(x['centres'], x['radii'], x['pressure']):
+            return False
+        rho, owner = out['radius'], out['owner']
+        nZ, nT = rho.shape
+        assert owner.shape == rho.shape and owner.min(initial=-1) >= -1 and owner.max(initial=-1) < n
+        dth, dz = 2 * np.pi / nT, (float(x['z1']) - float(x['z0'])) / nZ
+        close(out['area'], np.sum(rho[owner >= 0]) * dth * dz, atol=1e-300, rtol=1e-9)
+        assert np.all(out['force'][:, 2] == 0) and np.all(rho[owner < 0] == 0)
+        assert np.sum(np.hypot(out['force'][:, 0], out['force'][:, 1])) <= float(x['pressure']) * out['area'] * (1 + 1e-9)
+        return True
+    return kw, check
+
+
 def majorPrincipalRef(S):
     """The largest principal compressive stress of eq. 3 (compression negative): -lambda_min, 0 if none."""
     return np.maximum(0.0, -np.linalg.eigvalsh(symmetricPart(S))[..., 0])
@@ -662,6 +688,7 @@ FUNCTIONS = {'fabricStress': fabricStress, 'grainStresses': grainStresses, 'vonM
              'keptVolumeFraction': keptVolumeFraction, 'patternName': patternName, 'randomRotation': randomRotation,
              'placeFragments': placeFragments, 'matricesToArray': matricesToArray, '_fastMatrixPath': fastMatrixPath,
              'pWaveStep': pWaveStep, 'densityScaling': densityScaling, 'inertialNumber': inertialNumber,
+             'membraneLoad': membraneLoad,
              'cycleJumpPlan': cycleJumpPlan}
 
 
@@ -678,6 +705,8 @@ def finite(out):
     """Every float in the result (a float, an array or a tuple of them) is finite."""
     if isinstance(out, tuple):
         return all(finite(o) for o in out)
+    if isinstance(out, dict):
+        return all(finite(o) for o in out.values())
     if isinstance(out, (bool, str)):
         return True
     a = np.asarray(out)
