@@ -51,15 +51,50 @@ def test_no_scatter_gives_modulus_zero(tmp_path):
     fit = calibration.calibrate(d, crushingForce('vonMises', d / 2, 2e6, 1.2), 'vonMises')
     assert fit['ft0'] == pytest.approx(2e6, rel=1e-9) and fit['m'] == pytest.approx(1.2, rel=1e-9)
     assert fit['weibullModulus'] == 0.0
+    # the strength at the grains' size: at the geometric mean radius, by eq. 4 with the exact law
+    rRef = math.exp(np.mean(np.log(d / 2)))
+    assert fit['rRef'] == pytest.approx(rRef, rel=1e-12)
+    assert fit['ftRef'] == pytest.approx(2e6 / rRef ** 1.2, rel=1e-9)
+
+
+def test_the_strength_at_the_grains_size_is_what_the_data_determine(tmp_path):
+    """ft0 (r = 1 m) is uncertain by m's uncertainty times ln(1 m / r); at the geometric mean radius only by the
+    scatter: its interval holds the true f_t there and is several times narrower than ft0's."""
+    path = str(tmp_path / 'measured.csv')
+    synthetic(path, n=40, ft0=3.1e6, m=1.0, k=5.0, seed=11)
+    d, F = calibration.readMeasured(path)
+    fit = calibration.calibrate(d, F, 'vonMises')
+    true = 3.1e6 / fit['rRef']
+    assert fit['ftRefLow'] < true < fit['ftRefHigh']
+    relRef = fit['ftRefHigh'] / fit['ftRefLow']
+    rel0 = fit['ft0High'] / fit['ft0Low']
+    assert math.log(rel0) > 3 * math.log(relRef), (rel0, relRef)
+    # the same law reported at a given size: f_t there equals ft0 / r^m of the fit
+    at = calibration.calibrate(d, F, 'vonMises', rRef=0.02)
+    assert at['ftRef'] == pytest.approx(at['ft0'] / 0.02 ** at['m'], rel=1e-4)
+
+
+def test_a_folder_is_refused(tmp_path):
+    with pytest.raises(calibration.CalibrationError, match='a folder, not a CSV file'):
+        calibration.readMeasured(str(tmp_path))
 
 
 @pytest.mark.parametrize('text,words', [
     ('diameter,force\n0.03,1e5\n0.04,x\n0.02,5e4\n', r'measured.csv:3: force = .x. is not allowed: expected a finite number > 0'),
     ('diameter,force\n0.03,1e5\n-0.04,2e5\n0.02,5e4\n', r'measured.csv:3: diameter = .-0.04. is not allowed'),
     ('diameter,force\n0.03,1e5\n0.04,nan\n0.02,5e4\n', r'measured.csv:3: force'),
-    ('size,force\n0.03,1e5\n0.04,2e5\n0.02,5e4\n', r'expected one diameter column'),
+    ('size,force\n0.03,1e5\n0.04,2e5\n0.02,5e4\n', r"measured.csv:1: column 'size' is not allowed"),
+    ('grain,force\n1,1e5\n2,2e5\n3,5e4\n', r'measured.csv:1: expected one diameter column'),
+    ('diameter,diameter_mm,force\n0.03,30,1e5\n', r'measured.csv:1: expected one diameter column'),
     ('diameter,force\n0.03,1e5\n', r'1 grain\(s\); a fit needs at least 3'),
-    ('', r'not a CSV with a header row'),
+    ('', r'measured.csv: empty'),
+    # a grain number left of an unnamed header (was read as the diameter, the diameter as the force)
+    (',diameter,force\n1,0.03,1e5\n2,0.04,2e5\n3,0.02,5e4\n', r'measured.csv:1: column 1 has no name'),
+    ('diameter,force\n1,0.03,1e5\n2,0.04,2e5\n3,0.02,5e4\n', r'measured.csv:2: 3 fields, the header has 2'),
+    ('diameter,force\n0.03,1e5\n0.04,2e5,\n0.02,5e4\n', r'measured.csv:3: 3 fields, .*: a trailing comma\?'),
+    # units: mm under a [m] header, kN under a [N] header
+    ('diameter,force\n30,1e5\n40,2e5\n20,5e4\n', r'measured.csv:2: diameter = 30 is 30 m, .*in mm\? name the column diameter_mm'),
+    ('diameter_mm,force\n30,15\n40,20\n20,5\n', r'measured.csv:2: force = 15 on a 30 mm grain .*in kN\? name the column force_kN'),
 ])
 def test_malformed_input_names_the_file_and_the_row(tmp_path, text, words):
     path = tmp_path / 'measured.csv'

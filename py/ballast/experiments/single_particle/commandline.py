@@ -49,6 +49,8 @@ def calibrate(argv):
     print('%d grains, %s: ft0 = %.4g Pa m^m [%.4g, %.4g], m = %.3f [%.3f, %.3f], Weibull modulus %.3f [%.3f, %.3f]' % (
         fit['n'], fit['criterion'], fit['ft0'], fit['ft0Low'], fit['ft0High'], fit['m'], fit['mLow'], fit['mHigh'],
         fit['weibullModulus'], fit['weibullModulusLow'], fit['weibullModulusHigh']))
+    print('at the grains\' size, r = %.4g mm: f_t = ft0 / r^m = %.4g Pa [%.4g, %.4g] (ft0 is f_t at r = 1 m; its interval '
+          'is wide where m is uncertain)' % (1e3 * fit['rRef'], fit['ftRef'], fit['ftRefLow'], fit['ftRefHigh']))
     print('wrote %s; the oedometer with it: yade -n -x scripts/oedometer.py %s' % (
         ', '.join(files), calibration.commandLine(fit)))
     if a.confirm:
@@ -58,9 +60,14 @@ def calibrate(argv):
         s = test.run()
         crushed = test.table()
         crushed = crushed[crushed.crushed]
-        again = calibration.calibrate(crushed.diameter.to_numpy(), crushed.force.to_numpy(), fit['criterion'])
-        print('simulated at the measured diameters (%d of %d crushed): ft0 = %.4g, m = %.3f, Weibull modulus %.3f' % (
-            s['nCrushed'], s['n'], again['ft0'], again['m'], again['weibullModulus']))
+        again = calibration.calibrate(crushed.diameter.to_numpy(), crushed.force.to_numpy(), fit['criterion'],
+                                      rRef=fit['rRef'])
+        inside = fit['ftRefLow'] <= again['ftRef'] <= fit['ftRefHigh']
+        print('simulated at the measured diameters (%d of %d crushed): ft0 = %.4g, m = %.3f, Weibull modulus %.3f; '
+              'at r = %.4g mm f_t = %.4g Pa, %s the measured fit\'s interval [%.4g, %.4g]: %s' % (
+                  s['nCrushed'], s['n'], again['ft0'], again['m'], again['weibullModulus'], 1e3 * fit['rRef'],
+                  again['ftRef'], 'inside' if inside else 'outside', fit['ftRefLow'], fit['ftRefHigh'],
+                  'confirmed' if inside else 'not confirmed'))
     return 0
 
 
