@@ -294,6 +294,16 @@ def test_a_sleeper_that_reaches_the_floor_stops_the_run(tmp_path):
     last = pd.read_csv(os.path.join(test.out, 'samples.csv')).settlement.iloc[-1]   # where it stopped, mid-cycle
     top = test.initial['zBase']                                                      # the underside at the start
     assert top - SMALL['dMin'] / 2 < last < top - SMALL['dMin'] / 2 + SMALL['dMin']  # on the floor, not below it
+    # every file says the same at the stop: the cycle cut short is the last row of cycles.csv (complete 0), its
+    # settlement the last sample's and the summary's, its crush count the summary's, crushes.csv's and grading.csv's
+    cyc = pd.read_csv(os.path.join(test.out, 'cycles.csv'))
+    crushes = pd.read_csv(os.path.join(test.out, 'crushes.csv'))
+    grading = pd.read_csv(os.path.join(test.out, 'grading.csv'))
+    assert list(cyc.complete) == [1] * s['cycles'] + [0] and s['stoppedInCycle'] == s['cycles'] + 1
+    assert list(cyc.cycle) == list(range(1, s['cycles'] + 2))
+    assert cyc.settlement.iloc[-1] == pytest.approx(last, rel=1e-8) and s['settlement'] == pytest.approx(last, rel=1e-8)
+    assert s['nCrushed'] == cyc.nCrushed.iloc[-1] == cyc.crushes.sum() == len(crushes) > 0
+    assert crushes.cycle.max() <= s['stoppedInCycle'] and grading.cycle.iloc[-1] == s['stoppedInCycle']
 
 
 def test_a_state_saved_before_the_new_floors_reopens_and_goes_on(tmp_path):

@@ -222,13 +222,17 @@ class BoxTest(Cyclic, Experiment):
                           extra=lambda: 'cycle %d of %d, settlement %.2f mm, %d crushed, %d abraded' % (
                               self.cyclesDone(), target, 1e3 * (rec.samples[-1][4] if rec.samples else 0),
                               rec.samples[-1][6] if rec.samples else 0, rec.samples[-1][7] if rec.samples else 0))
+        if self.onFloor and rec.partial is None:
+            self.sample()   # a last sample at the stop, and the cycle it cut short closed with it
+            rec.closePartial(p, self.ownStep())
         k = self.cyclesDone()
         self.grade(k)
         if p['vtk'] > 0:
             self.frame()   # the last
         s = self.finishRun(lambda: outputs.write(self))
-        self.say('done: %d cycles, settlement %.2f mm (resilient %.3f mm), %d crushed, %d abraded; results in %s' % (
-            k, 1e3 * s['settlement'], 1e3 * s['resilient'], s['nCrushed'], s['nAbraded'], self.out))
+        self.say('done: %d cycles%s, settlement %.2f mm (resilient %.3f mm), %d crushed, %d abraded; results in %s' % (
+            s['cycles'], ' and cycle %d cut short on the floor' % rec.partial if rec.partial else '',
+            1e3 * s['settlement'], 1e3 * s['resilient'], s['nCrushed'], s['nAbraded'], self.out))
         return s
 
     def run(self):

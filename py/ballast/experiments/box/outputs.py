@@ -61,8 +61,10 @@ OWN_COLUMNS = ('settlementPeak', 'work', 'tilt')   # cycles.csv beyond the share
 def cycleTable(exp):
     """cycles.csv as a DataFrame (the shared schema, experiments.cyclic, then OWN_COLUMNS)."""
     rec = exp.recorder
-    return cyclic.table([dict(zip(rec.CYCLE_COLUMNS, row)) for row in rec.cycles], OWN_COLUMNS, exp.jumper,
-                        exp.stepChoice)
+    frame = cyclic.table([dict(zip(rec.CYCLE_COLUMNS, row)) for row in rec.cycles], OWN_COLUMNS, exp.jumper,
+                         exp.stepChoice)
+    frame['complete'] = (frame.cycle != rec.partial).astype(int)   # 0: the cycle the sleeper on the floor cut short
+    return frame
 
 
 def summary(exp):
@@ -98,7 +100,9 @@ def summary(exp):
         # the steps the cycles took (their median, as cpuSecondsPerCycle), not the period over the last step
         'stepsPerCycle': (float(np.nanmedian(cyc.stepsPerCycle)) if n and cyc.stepsPerCycle.notna().any()
                           else rec.period / O.dt), **cyclic.jumpSummary(cyc, exp.jumper),
-        **({'stoppedBy': 'sleeperOnFloor'} if exp.onFloor else {})}
+        **({'stoppedBy': 'sleeperOnFloor'} if exp.onFloor else {}),
+        # cut short on the floor: the whole cycles before it; settlement and counts are those at the stop
+        **({'cycles': int(rec.partial) - 1, 'stoppedInCycle': int(rec.partial)} if rec.partial else {})}
 
 
 def cutSamples(exp, t):

@@ -26,6 +26,7 @@ class Recorder(CycleRecorder):
                      'nCrushed', 'nAbraded', 'maxDamage', 'maxStressRatio', 'nGrains', 'tilt', 'cpuSeconds', 'dt',
                      'stepsPerCycle', 'inertialMax', 'inertialMedian', 'responseRatio')
     iter0 = None   # O.iter at the current cycle's start (states saved before the steps per cycle have none)
+    partial = None   # the cycle cut short where the sleeper reached the floor: its row of cycles.csv ends at the stop
 
     def __init__(self, sleeper=None, z0=None, t0=None, period=None):
         self.sleeper, self.z0, self.t0, self.period = sleeper, z0, t0, period
@@ -38,7 +39,7 @@ class Recorder(CycleRecorder):
 
     def state(self):
         return {k: getattr(self, k) for k in ('sleeper', 'z0', 't0', 'period', 'samples', 'cycles', 'start', 'jumped',
-                                              'iter0')}
+                                              'iter0', 'partial')}
 
     @classmethod
     def fromState(cls, s, ref=None):
@@ -94,3 +95,13 @@ class Recorder(CycleRecorder):
                                                       quasistatic.bedMass(p, grains.arrays()[2], ownStep),
                                                       float(np.max(F) - np.min(F)), float(np.max(s) - s[-1]))])
         self.cpu, self.iter0 = time.process_time(), O.iter
+
+    def closePartial(self, p, ownStep=None):
+        """The cycle under way closed where the run stopped (the sleeper on the floor): its row of cycles.csv numbered
+        as the cycle it cut short and ending at the last sample, so that every count and the last settlement of
+        cycles.csv are the run's at its stop."""
+        n = int(self.samples[-1][1]) + 1
+        self.closeCycle(len(self.samples) - 1, p, ownStep)
+        self.cycles[-1][0] = n
+        self.partial = n
+        self.samples, self.start = self.samples[-1:], 0
