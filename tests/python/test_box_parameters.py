@@ -52,3 +52,23 @@ def test_a_box_of_more_grains_than_a_run_may_take_is_refused():
     with pytest.raises(ParamError, match=r'boxLength = 1000.0 is not allowed: a sample of 90 m\^3 holds about 2.6e\+06'):
         check({'boxLength': 1e3})
     check({'boxLength': 2.0})   # 0.18 m^3: 5 300 grains
+
+
+def test_a_load_beyond_rigid_sphere_dem_is_refused():
+    """The mean stress under the sleeper's footprint through the smallest grain's contact (F = sigma dMin^2, kn = E r
+    for two equal grains of the linear law) overlaps it by sigma dMin^2 / (E r) = 4 sigma / E of its radius: at most
+    0.25, so sigma <= E / 16 (1.875e10 Pa at the paper's E), whatever gives the load (peakLoad 1e12 N sank a sleeper
+    1 m into the floor)."""
+    p = check({})
+    area = p['sleeperWidth'] * p.sleeperLength()
+    most = p['young'] / 16 * area
+    check({'peakLoad': 0.99 * most})
+    with pytest.raises(ParamError, match=r"peakLoad = .* mean stress of .* on the bed under the sleeper's footprint.*"
+                                         r"at most 1.87e\+10 Pa") as e:
+        check({'peakLoad': 1.01 * most})
+    assert e.value.name == 'peakLoad'
+    with pytest.raises(ParamError, match='peakLoad = 1000000000000.0 is not allowed'):
+        check({'peakLoad': 1e12})   # the audit's case
+    # a softer grain bears less: young / 100, the bound / 100
+    with pytest.raises(ParamError, match='peakLoad'):
+        check({'peakLoad': 0.02 * most, 'young': p['young'] / 100, 'prepYoung': p['young'] / 1000})

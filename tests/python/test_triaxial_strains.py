@@ -77,5 +77,10 @@ def test_parameters_cross_checks(tmp_path):
                       ({'reference': write(tmp_path, 'N,x\n')}, 'reference')):
         with pytest.raises(ParamError, match='TriaxialTest: %s = ' % name):
             check(bad)
+    # the ends carry confining + qMax: at most young / 16 (the smallest grain's overlap at most a quarter of its radius)
+    most = p['young'] / 16
+    check({'qMax': 0.99 * most - 60e3})
+    with pytest.raises(ParamError, match=r"TriaxialTest: qMax = .* on the specimen's ends"):
+        check({'qMax': 1.01 * most - 60e3})
     good = write(tmp_path, 'N,axial_strain\n1,0.01\n2,0.02\n', 'a.csv')
     assert [k for k, _, _ in check({'reference': good + ',' + good}).references()] == ['axial', 'axial']

@@ -20,6 +20,7 @@ PHI = 'a number in [0, pi/2)'   # the allowed range of a friction angle, in word
 MAX_LOADING_STEPS = 1e9     # [steps] cycles / f / dt at the start; 1e9 steps are days of CPU (3e5 at 8 Hz, 1 cycle)
 MIN_STEPS_PER_CYCLE = 100   # [steps] a cycle resolved by fewer time steps is not a load cycle
 MAX_GRAINS = 1e6            # [grains] a sample YADE can step on one core (1 s of CPU a step at 1 us a grain-step)
+MAX_OVERLAP_RATIO = 0.25   # [-] the largest overlap / radius a loading may give the smallest grain (checkStress)
 
 
 def take(group, *names):
@@ -243,6 +244,22 @@ class ExperimentParameters(Parameters):
         if n > MAX_GRAINS:
             self.bad(name, 'a sample of %.3g m^3 holds about %.2g grains of %g-%g m, more than the %.0e a run may take' % (
                 volume, n, self['dMin'], self['dMax'], MAX_GRAINS))
+
+    def checkStress(self, name, stress, what):
+        """A mean stress `stress` [Pa] the loading puts on the sample (`what` says where; the parameter `name` sets
+        it) that a rigid-sphere DEM can carry: the smallest grain, carrying stress dMin^2 through a contact with a
+        grain like itself (the linear law, kn = E r), overlaps it by at most MAX_OVERLAP_RATIO of its radius (the
+        oedometer's bound on Fmax through one steel contact). Beyond it the grains interpenetrate and nothing the run
+        reports is physics (a peak load of 1e12 N once sank a sleeper 1 m into the floor)."""
+        from ..geometry import frictPhysStiffness
+        r = self['dMin'] / 2
+        kn = frictPhysStiffness(self['young'], self['poisson'], r, self['young'], self['poisson'], r)[0]
+        u = stress * self['dMin'] ** 2 / kn
+        if u > MAX_OVERLAP_RATIO * r:
+            most = MAX_OVERLAP_RATIO * r * kn / self['dMin'] ** 2
+            self.bad(name, 'puts a mean stress of %.3g Pa on %s: the smallest grain would overlap its neighbour by %.3g '
+                           'of its radius, more than %g (rigid-sphere DEM); at most %.3g Pa with young = %g Pa' % (
+                               stress, what, u / r, MAX_OVERLAP_RATIO, most, self['young']))
 
     def checkDensityStep(self):
         """densityStep 0, or at least the paper's step (startTimeStep) with timeStep pwave; the quasi-static option

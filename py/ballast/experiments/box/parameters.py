@@ -151,6 +151,8 @@ class BoxParameters(ExperimentParameters):
                 self.history()
             except LoadHistoryError as e:
                 bad('loadFile', str(e))
+        self.checkStress('loadFile' if p['loadFile'] else 'peakLoad', self.history().peak / (
+            p['sleeperWidth'] * self.sleeperLength()), "the bed under the sleeper's footprint")
         self.checkDensityStep()
         self.checkCycleJump()
         self.checkCycles(self.history().period, 'f' if not p['loadFile'] else 'loadFile', 'cycles')

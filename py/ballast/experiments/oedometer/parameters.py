@@ -16,7 +16,7 @@ from ...geometry import frictPhysStiffness
 from ...params import NUMBER_NONNEGATIVE, NUMBER_POSITIVE, Param, anyText, between, boolean, choice, flag, intAtLeast, \
     nonNegative, positive, positiveInt, text
 from ..parameters import (CONTACT, CYCLE_JUMP, ENGINES, GRAINS, INTEGRATION, PREPARATION, RUN, SEED, STEEL,
-                          CYCLE_OUTPUTS, QUASI_STATIC, ExperimentParameters, take)
+                          CYCLE_OUTPUTS, MAX_OVERLAP_RATIO, QUASI_STATIC, ExperimentParameters, take)
 from .loadcurve import halfLoadTime, peakTime
 
 OWNER = 'Oedometer'
@@ -105,7 +105,6 @@ ROLLING_KEYS = ('rollingFriction', 'rollingStiffness')
 
 # A run must stay in the range where rigid-sphere DEM holds: checked before any work (the bounds of every cyclic
 # experiment are ExperimentParameters.checkCycles').
-MAX_OVERLAP_RATIO = 0.25    # [-] overlap / radius of the smallest grain if Fmax went through one of its steel contacts
 
 
 class OedometerParameters(ExperimentParameters):

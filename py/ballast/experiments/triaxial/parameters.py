@@ -128,6 +128,8 @@ class TriaxialParameters(ExperimentParameters):
         self.checkGrainCount(math.pi * p['diameter'] ** 2 / 4 * p['height'], 'diameter')
         if p['qMin'] >= p['qMax']:
             bad('qMin', 'must be smaller than qMax = %g Pa' % p['qMax'])
+        self.checkStress('qMax' if p['qMax'] >= p['confining'] else 'confining', p['confining'] + p['qMax'],
+                         "the specimen's ends at the peak (confining + qMax)")
         if p['membraneCell'] > p['dMax']:
             bad('membraneCell', '%g m is larger than the largest grain, dMax = %g m: the membrane would not see the '
                 'grains it rests on' % (p['membraneCell'], p['dMax']))
