@@ -15,7 +15,7 @@
 * The stress tensors of one step are cached, so two engines checking at the same step read them once.
 """
 import numpy as np
-from yade import O
+from yade import O, utils
 from yade.wrapper import Sphere
 
 from . import _ballast, grainkinds, runtime
@@ -29,12 +29,14 @@ class GrainTable:
 
     def __init__(self):
         self.kind = kind = grainkinds.current()
-        ids, masks = [], []
+        ids, masks, rows = [], [], []
         self.radiusById = np.zeros(len(O.bodies))
         self.sphereMaterials, self.otherMaterials = {}, {}   # the bodies' own material objects (see _material)
+        row = -1   # the body's row among the bodies there are (positions() reads them in that order)
         for b in O.bodies:
             if b is None:
                 continue
+            row += 1
             if isinstance(b.shape, Sphere):  # the contact's geometry (Ig2_*_Sphere), whatever the grain kind
                 _material(self.sphereMaterials, b.material)
                 self.radiusById[b.id] = b.shape.radius
@@ -43,7 +45,10 @@ class GrainTable:
             if b.dynamic and kind.isGrain(b):
                 ids.append(b.id)
                 masks.append(b.groupMask)
+                rows.append(row)
         self.ids = np.array(ids, dtype=np.int64)
+        self.rows = np.array(rows, dtype=np.int64)
+        self.nBodies = row + 1   # the bodies there were
         self.radii = np.asarray(kind.radii(self.ids), dtype=float)
         self.masks = np.array(masks, dtype=np.int64)
         self._sign()
@@ -143,6 +148,19 @@ def stresses(ids):
     if _stressCache[0] != key:
         _stressCache = (key, grainkinds.current().stressTensors())
     return _stressCache[1][ids]
+
+
+def positions():
+    """(grain table, (n, 3) centres [m] of its grains), read in C++: YADE's utils.coordsAndDisplacements gives an
+    axis of every body there is, in id order, without a Python loop over the bodies (a membrane update read them
+    one by one in 4 ms of its 13 for 1 300 grains). A table that no longer matches the bodies (one erased or
+    added by hand within this step) is rebuilt."""
+    x = np.array([utils.coordsAndDisplacements(axis)[0] for axis in range(3)], dtype=float).reshape(3, -1).T
+    table = grains()
+    if table.nBodies != len(x):
+        refresh()
+        table = grains()
+    return table, x[table.rows] if len(table.rows) else np.zeros((0, 3))
 
 
 def _arrays(rows):

@@ -198,3 +198,22 @@ def test_an_engine_built_before_its_scene_runs_in_it():
     O.run(1, True)
     back = [e for e in O.engines if isinstance(e, BallastAbrasionEngine)]
     assert len(back) == 1 and back[0].nChecks == 11 and back[0].nAbraded >= n
+
+
+def test_yade_timing_counts_the_engines_and_resets_them():
+    """yade.timing.reset() sets every engine's execTime and execCount to 0 (it failed on ours); with O.timingEnabled
+    each call of an engine is counted: iterPeriod 1 over n steps, n calls."""
+    from yade import timing
+    loadedGrain()
+    c = add(BallastCrushEngine(ft0=1e12, iterPeriod=1))
+    a = add(BallastAbrasionEngine(strength=1e12, iterPeriod=1))
+    O.timingEnabled = True
+    try:
+        O.run(5, True)
+        assert c.execCount == 5 and c.execTime > 0
+        timing.reset()
+        assert (c.execCount, c.execTime, a.execCount, a.execTime) == (0, 0, 0, 0)
+        O.run(7, True)
+        assert c.execCount == 7 and a.execCount == 7
+    finally:
+        O.timingEnabled = False

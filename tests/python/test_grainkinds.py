@@ -140,3 +140,20 @@ def test_a_kind_of_other_grains_turns_the_prefilter_off(nothingKind):
         assert math.isfinite(a.maxPressureRatio)
     finally:
         grainkinds._kinds.pop('test-clumpish', None)
+
+
+def test_positions_are_read_in_cplusplus_as_yade_holds_them_and_follow_an_erase():
+    """harvest.positions: the centres of the table's grains, exactly b.state.pos, with a wall and an erased grain
+    among them (YADE's list skips the erased one); a grain erased by hand within the step rebuilds the table."""
+    O.reset()
+    O.bodies.append(utils.wall(0, axis=2))
+    ids = [O.bodies.append(utils.sphere((0.1 * k, 0.01 * k, 0.3 + 0.02 * k), 0.04)) for k in range(6)]
+    O.bodies.erase(ids[2])
+    harvest.refresh()
+    table, x = harvest.positions()
+    assert table.ids.tolist() == [i for i in ids if i != ids[2]]
+    assert x.tolist() == [list(O.bodies[int(i)].state.pos) for i in table.ids]
+    O.bodies.erase(ids[4])   # by hand, no refresh: the table no longer matches the bodies there are
+    table, x = harvest.positions()
+    assert table.ids.tolist() == [ids[0], ids[1], ids[3], ids[5]]
+    assert x.tolist() == [list(O.bodies[int(i)].state.pos) for i in table.ids]

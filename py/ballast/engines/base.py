@@ -21,6 +21,7 @@ from ..params import ParamError, validate, validateAll
 
 PERIODS = ('iterPeriod', 'virtPeriod', 'realPeriod')
 PERIODIC_STATE = ('iterLast', 'virtLast', 'realLast', 'nDone')
+TIMING = ('execTime', 'execCount')   # YADE's Engine timing, which yade.timing.reset() sets to 0
 
 
 def requireAPeriod(owner, periods):
@@ -86,7 +87,7 @@ class BallastEngine(runtime.Runner):
             if name in PERIODS:
                 requireAPeriod(owner, dict({k: getattr(self, k) for k in PERIODS}, **{name: value}))
             PyRunner.__setattr__(self, name, value)
-        elif name in PERIODIC_STATE:
+        elif name in PERIODIC_STATE or name in TIMING:
             PyRunner.__setattr__(self, name, value)
         else:
             raise AttributeError('%s: no attribute %r to set; parameters: %s; periodic settings: %s'

@@ -2,14 +2,13 @@
 the cell pressure on the specimen's outermost grains is worked out in C++ (``_ballast.membraneLoad``: rays cast
 radially through cells of about `cell` [m] between the platens, gaps deeper than `depth` [m] bridged) and set as
 each grain's permanent force (``O.forces.setPermF``), which YADE then applies at every step without Python. The
-specimen's volume and lateral area are those the membrane encloses. The grains are the scene's grain kind's."""
+specimen's volume and lateral area are those the membrane encloses. The grains are the scene's dynamic grains of its kind."""
 import math
 
 import numpy as np
 from yade import O, Vector3
 
-from ... import _ballast, runtime
-from .. import grains
+from ... import _ballast, harvest, runtime
 
 ZERO = Vector3(0, 0, 0)
 
@@ -39,25 +38,25 @@ class Membrane:
         return O.bodies[self.top].state.pos[2] - O.bodies[self.bottom].state.pos[2]
 
     def grid(self):
-        """(cells around, cells along) for the grains as they are: cells of about `cell` [m] over the outermost reach
-        and between the platens."""
-        kind = grains.kind()
-        ids = kind.ids()
-        x, r = kind.centres(ids), kind.radii(ids)
+        """(grain ids, centres [m], radii [m], cells around, cells along) for the grains as they are: cells of about
+        `cell` [m] over the outermost reach and between the platens. The grains are the scene's dynamic grains of
+        its kind (harvest.grains: a table rebuilt only when the scene changed), their centres read in C++."""
+        table, x = harvest.positions()
+        r = table.radii
         reach = float(np.max(np.hypot(x[:, 0], x[:, 1]) + r)) if len(r) else self.cell
-        return x, r, max(3, int(round(2 * math.pi * reach / self.cell))), max(1, int(round(self.height() / self.cell)))
+        return (table.ids, x, r, max(3, int(round(2 * math.pi * reach / self.cell))),
+                max(1, int(round(self.height() / self.cell))))
 
     def surface(self):
         """The membrane's shape now: (radius [m] per cell (nZ, nTheta), the platens' faces z0, z1 [m])."""
-        x, r, nT, nZ = self.grid()
+        _, x, r, nT, nZ = self.grid()
         z0, z1 = O.bodies[self.bottom].state.pos[2], O.bodies[self.top].state.pos[2]
         return _ballast.membraneLoad(x, r, self.pressure, 0.0, 0.0, z0, z1, nT, nZ, self.depth)['radius'], z0, z1
 
     def update(self):
         """The pressure's load worked out for the grains as they are and set as their permanent forces; the grains
         it left since the last update get none."""
-        ids = grains.kind().ids()
-        x, r, nT, nZ = self.grid()
+        ids, x, r, nT, nZ = self.grid()
         z0, z1 = O.bodies[self.bottom].state.pos[2], O.bodies[self.top].state.pos[2]
         out = _ballast.membraneLoad(x, r, self.pressure, 0.0, 0.0, z0, z1, nT, nZ, self.depth)
         force = out['force']
