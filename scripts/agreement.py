@@ -14,7 +14,7 @@ import os
 import sys
 
 from ballast.analysis import agreement
-from ballast.study.options import StudyError
+from ballast.study.options import StudyError, cycleNumber
 
 
 def alphaLevel(text):
@@ -28,12 +28,6 @@ def alphaLevel(text):
     return value
 
 
-def cycle(text):
-    """--at's values: cycles from 1."""
-    if not text.isdigit() or int(text) < 1:
-        raise argparse.ArgumentTypeError('%r; allowed: a cycle number from 1' % text)
-    return int(text)
-
 
 def main(argv=None):
     ap = argparse.ArgumentParser(prog='scripts/agreement.py', description=__doc__.split('\n\n')[0])
@@ -41,7 +35,7 @@ def main(argv=None):
     ap.add_argument('--reference', required=True, help='the study (or its records) run without it, on the same seeds')
     ap.add_argument('--quantities', nargs='+', default=['settlement', 'resilient'], metavar='COLUMN',
                     help='columns of cycles.csv compared (default: settlement resilient)')
-    ap.add_argument('--at', type=cycle, nargs='+', default=[1, 2, 5], metavar='N', help='cycles (default: 1 2 5)')
+    ap.add_argument('--at', type=cycleNumber, nargs='+', default=[1, 2, 5], metavar='N', help='cycles (default: 1 2 5)')
     ap.add_argument('--alpha', type=alphaLevel, default=0.05, help='the tests\' level (default 0.05)')
     ap.add_argument('--out', required=True, help='where agreement-pairs.csv and agreement.json go')
     a = ap.parse_args(argv)

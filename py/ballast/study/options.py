@@ -98,3 +98,10 @@ def addArguments(parser, *names):
     """The options `names` on an argparse parser, as flag() names them (and SHORT)."""
     for name in names:
         parser.add_argument(flag(name), *[SHORT[name]] if name in SHORT else [], **argument(name))
+
+
+def cycleNumber(text):
+    """An argparse type for a cycle number of cycles.csv (--at N ...): an integer from 1."""
+    if not text.isdigit() or int(text) < 1:
+        raise argparse.ArgumentTypeError('%r; allowed: a cycle number from 1' % text)
+    return int(text)
