@@ -1,11 +1,11 @@
-"""ballast.experiments.box.loadhistory: the sine between the seating and the peak load, a CSV history
+"""ballast.experiments.loadhistory (the box's load): the sine between the seating and the peak load, a CSV history
 (shape, interpolation, repetition) and every malformed CSV refused with its line named (no YADE)."""
 import math
 
 import pytest
 
 from ballast.experiments.box import check
-from ballast.experiments.box.loadhistory import SINE_SAMPLES, LoadHistory, LoadHistoryError
+from ballast.experiments.loadhistory import SINE_SAMPLES, LoadHistory, LoadHistoryError
 from ballast.params import ParamError
 
 

@@ -84,3 +84,27 @@ def test_parameters_cross_checks(tmp_path):
         check({'qMax': 1.01 * most - 60e3})
     good = write(tmp_path, 'N,axial_strain\n1,0.01\n2,0.02\n', 'a.csv')
     assert [k for k, _, _ in check({'reference': good + ',' + good}).references()] == ['axial', 'axial']
+
+
+def test_a_deviator_history_from_a_csv(tmp_path):
+    """loadFile: q(t) interpolated linearly over one cycle and repeated; its first q seats the specimen; qMin, qMax
+    and f refused beside it; a malformed file refused with its line; the peak bounded as qMax is."""
+    path = write(tmp_path, 't,q\n0,40000\n0.1,240000\n0.25,40000\n', 'q.csv')
+    p = check({'loadFile': path})
+    assert p.period() == pytest.approx(0.25) and p.seatDeviator() == 40e3 and p.peakDeviator() == 240e3
+    assert p.deviator(0.05) == pytest.approx(140e3) and p.deviator(0.175) == pytest.approx(140e3)
+    assert p.deviator(0.25 + 0.05) == pytest.approx(140e3)   # the next cycle repeats it
+    for k, v in (('qMax', 300e3), ('qMin', 10e3), ('f', 10.0)):
+        with pytest.raises(ParamError, match='TriaxialTest: %s = .* is not used with loadFile' % k):
+            check({'loadFile': path, k: v})
+    bad = write(tmp_path, 't,q\n0,40000\n0.1,abc\n0.2,40000\n', 'bad.csv')
+    with pytest.raises(ParamError, match=r"TriaxialTest: loadFile = .*line 3: expected numbers in columns t and q"):
+        check({'loadFile': bad})
+    force = write(tmp_path, 't,F\n0,1\n0.1,2\n0.2,1\n', 'F.csv')
+    with pytest.raises(ParamError, match=r'must name the columns t \(time \[s\]\) and q \(deviator stress \[Pa\]\)'):
+        check({'loadFile': force})
+    huge = write(tmp_path, 't,q\n0,40000\n0.1,1e11\n0.2,40000\n', 'huge.csv')
+    with pytest.raises(ParamError, match="TriaxialTest: loadFile = .* on the specimen's ends"):
+        check({'loadFile': huge})
+    # without loadFile the sine's closed form, as before
+    assert check({}).deviator(0.05) == pytest.approx(45e3 + 185e3 * 0.5 * (1 - math.cos(math.pi / 2)))

@@ -9,6 +9,7 @@ its --help and docs/parameters.md list them, and may give a declaration another 
 reads it in plain Python.
 """
 import math
+import os
 
 from ..engineparams import ABRASION, CRUSH
 from ..params import (INT32_MAX, NUMBER_NONNEGATIVE, NUMBER_POSITIVE, Param, Parameters, anyText, between, boolean, choice,
@@ -244,6 +245,23 @@ class ExperimentParameters(Parameters):
         if n > MAX_GRAINS:
             self.bad(name, 'a sample of %.3g m^3 holds about %.2g grains of %g-%g m, more than the %.0e a run may take' % (
                 volume, n, self['dMin'], self['dMax'], MAX_GRAINS))
+
+    def checkLoadFile(self, replaced, noun):
+        """With loadFile: the options the history replaces (`replaced`, the loads and the frequency of the sine) left
+        at their defaults, the file there and its history readable (self.history(): LoadHistoryError names the line).
+        `noun` names what the history gives (load, deviator)."""
+        from .loadhistory import LoadHistoryError
+        p = self
+        for k in replaced:   # the history gives the loads and the period: a value set is lost
+            if p[k] != self.PARAMS[k].default:
+                self.bad(k, 'is not used with loadFile = %r: the %s history gives the %ss and the period (leave %s '
+                            'out, or leave loadFile out for the sine)' % (p['loadFile'], noun, noun, k))
+        if not os.path.isfile(p['loadFile']):
+            self.bad('loadFile', 'no such file')
+        try:
+            self.history()
+        except LoadHistoryError as e:
+            self.bad('loadFile', str(e))
 
     def checkStress(self, name, stress, what):
         """A mean stress `stress` [Pa] the loading puts on the sample (`what` says where; the parameter `name` sets

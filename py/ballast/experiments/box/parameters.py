@@ -12,7 +12,7 @@ from ...params import NUMBER_NONNEGATIVE, NUMBER_POSITIVE, Param, anyText, betwe
     positive, positiveInt, text
 from ..parameters import (CONTACT, CYCLE_JUMP, ENGINES, GRAINS, INTEGRATION, PHI, PREPARATION, RUN, SEED, STEEL,
                           CYCLE_OUTPUTS, QUASI_STATIC, ExperimentParameters, take)
-from .loadhistory import LoadHistory, LoadHistoryError
+from ..loadhistory import LoadHistory
 
 OWNER = 'BoxTest'
 
@@ -141,16 +141,7 @@ class BoxParameters(ExperimentParameters):
         if p['continueFrom'] and not os.path.isfile(p['continueFrom']):
             bad('continueFrom', 'no such state file')
         if p['loadFile']:
-            for k in ('seatLoad', 'peakLoad', 'f'):   # the history gives the loads and the period: a value set is lost
-                if p[k] != PARAMS[k].default:
-                    bad(k, 'is not used with loadFile = %r: the load history gives the loads and the period (leave %s '
-                           'out, or leave loadFile out for the sine)' % (p['loadFile'], k))
-            if not os.path.isfile(p['loadFile']):
-                bad('loadFile', 'no such file')
-            try:
-                self.history()
-            except LoadHistoryError as e:
-                bad('loadFile', str(e))
+            self.checkLoadFile(('seatLoad', 'peakLoad', 'f'), 'load')
         self.checkStress('loadFile' if p['loadFile'] else 'peakLoad', self.history().peak / (
             p['sleeperWidth'] * self.sleeperLength()), "the bed under the sleeper's footprint")
         self.checkDensityStep()

@@ -110,14 +110,15 @@ class TriaxialTest(Cyclic, Experiment):
         span, move, _ = CONSOLIDATED
         self.runUntil(preparation.still(self.rig.top, span, move * self.membrane.height(), after=t0 + RAMP + span,
                                         unbalanced=REST), tEnd=t0 + RAMP + SEAT_TIME, phase='seat', checkEvery=100)
-        self.say('seated at q = %g kPa in %.3g s: height %.4f m' % (p['qMin'] / 1e3, O.time - t0, self.membrane.height()))
+        self.say('seated at q = %g kPa in %.3g s: height %.4f m' % (p.seatDeviator() / 1e3, O.time - t0,
+                                                                    self.membrane.height()))
 
     def deviator(self):
         """The deviator applied now [Pa]: 0 while consolidating, rising to qMin while seating, then the sine."""
         if self.cycling:
             return self.p.deviator(O.time - self.recorder.t0)
         if self.tSeat is not None:
-            return self.p['qMin'] * min(1.0, (O.time - self.tSeat) / RAMP)
+            return self.p.seatDeviator() * min(1.0, (O.time - self.tSeat) / RAMP)
         return 0.0
 
     def press(self):
@@ -211,9 +212,9 @@ class TriaxialTest(Cyclic, Experiment):
         tEnd = rec.t0 + (target - rec.jumped) * rec.period
         if self.jumper is not None:
             self.jumper.target = target
-        self.say('load: %d cycle(s) of q %g-%g kPa at %g Hz under p\' = %g kPa, dt = %.3g s (%.3g steps a cycle)' % (
-            target - self.cyclesDone(), p['qMin'] / 1e3, p['qMax'] / 1e3, p['f'], p['confining'] / 1e3, O.dt,
-            rec.period / O.dt))
+        self.say('load: %d cycle(s) of q %g-%g kPa (%s) of %.3g s under p\' = %g kPa, dt = %.3g s (%.3g steps a cycle)' % (
+            target - self.cyclesDone(), p.seatDeviator() / 1e3, p.peakDeviator() / 1e3, p['loadFile'] or 'sine',
+            p.period(), p['confining'] / 1e3, O.dt, rec.period / O.dt))
         if self.cyclesDone() < target:
             self.runUntil(lambda: self.cyclesDone() >= target, tEnd=tEnd + 2 * rec.period / p['samples'], phase='load',
                           checkEvery=50, simSpan=tEnd - O.time, simStart=O.time,

@@ -3,14 +3,17 @@ command line (``--name value``) and study tables use these names, units, ranges 
 contact law and every crushing, abrasion, strength, fatigue, time-step and cycle-jumping option are the declarations
 every experiment shares (:mod:`ballast.experiments.parameters`); the test's own are the specimen, its preparation,
 the membrane and the stresses. Needs no YADE."""
+import functools
 import hashlib
 import json
 import math
+import os
 
 from ...params import NUMBER_NONNEGATIVE, NUMBER_POSITIVE, Param, anyText, between, boolean, flag, intBetween, \
     nonNegative, positive, positiveInt, text
 from ..parameters import (CONTACT, CYCLE_JUMP, CYCLE_OUTPUTS, ENGINES, GRAINS, INTEGRATION, PREPARATION, QUASI_STATIC,
                           RUN, SEED, STEEL, ExperimentParameters, take)
+from ..loadhistory import LoadHistory
 from .strains import CurveError, readReference
 
 OWNER = 'TriaxialTest'
@@ -49,6 +52,9 @@ PARAMS = {
                   nonNegative, NUMBER_NONNEGATIVE),
     'qMax': Param(230e3, 'Pa', 'largest deviator stress of a cycle', positive, NUMBER_POSITIVE),
     'f': Param(5.0, 'Hz', 'loading frequency of the sine', positive, NUMBER_POSITIVE),
+    'loadFile': Param('', 'path', 'a deviator history instead of the sine: a CSV with columns t [s] and q [Pa], one '
+                      'cycle from t = 0, ending at the deviator it starts at (its first q seats the specimen, as '
+                      'qMin does)', anyText, 'a path', text),
     'cycles': Param(10, '-', 'load cycles of one load()', positiveInt, 'an integer >= 1'),
     'samples': Param(50, '-', 'rows of samples.csv per cycle (the strains and the stress path)', intBetween(20, 100000),
                      'an integer in [20, 100000]'),
@@ -72,6 +78,12 @@ PARAMS = {
     **QUASI_STATIC,
 }
 
+@functools.lru_cache(maxsize=8)
+def _history(path, mtime):
+    """loadFile's history, read once per file and version (the deviator is asked for every membranePeriod steps)."""
+    return LoadHistory.fromCsv(path, LoadHistory.DEVIATOR)
+
+
 # What decides a specimen: these parameters and the version of its preparation (bump it whenever specimen.build
 # changes: stored specimens of older versions are then not reused).
 SPECIMEN_KEYS = ('seed', 'diameter', 'height', 'segments', 'layers', 'solidFraction', 'layerPressure', 'steelFriction',
@@ -92,12 +104,30 @@ class TriaxialParameters(ExperimentParameters):
 
     OWNER, PARAMS = OWNER, PARAMS
 
+    def history(self):
+        """The deviator's cycle from loadFile (LoadHistory, read once a process), None for the sine."""
+        return _history(self['loadFile'], os.path.getmtime(self['loadFile'])) if self['loadFile'] else None
+
     def period(self):
-        return 1.0 / self['f']
+        h = self.history()
+        return h.period if h else 1.0 / self['f']
+
+    def seatDeviator(self):
+        """The deviator at each cycle's start and end [Pa]: qMin, or the history's first."""
+        h = self.history()
+        return h.seat if h else self['qMin']
+
+    def peakDeviator(self):
+        """The largest deviator of a cycle [Pa]: qMax, or the history's."""
+        h = self.history()
+        return h.peak if h else self['qMax']
 
     def deviator(self, t):
         """The deviator stress [Pa] at loading time t [s]: the sine from qMin up to qMax and back, a cycle from t = 0
-        (q = qMin at each cycle's start and end)."""
+        (q = qMin at each cycle's start and end), or loadFile's history interpolated linearly, cycle after cycle."""
+        h = self.history()
+        if h:
+            return float(h.at(t))
         return self['qMin'] + (self['qMax'] - self['qMin']) * 0.5 * (1 - math.cos(2 * math.pi * self['f'] * t))
 
     def cell(self):
@@ -128,8 +158,10 @@ class TriaxialParameters(ExperimentParameters):
         self.checkGrainCount(math.pi * p['diameter'] ** 2 / 4 * p['height'], 'diameter')
         if p['qMin'] >= p['qMax']:
             bad('qMin', 'must be smaller than qMax = %g Pa' % p['qMax'])
-        self.checkStress('qMax' if p['qMax'] >= p['confining'] else 'confining', p['confining'] + p['qMax'],
-                         "the specimen's ends at the peak (confining + qMax)")
+        if p['loadFile']:
+            self.checkLoadFile(('qMin', 'qMax', 'f'), 'deviator')
+        self.checkStress('loadFile' if p['loadFile'] else 'qMax' if p['qMax'] >= p['confining'] else 'confining',
+                         p['confining'] + self.peakDeviator(), "the specimen's ends at the peak (confining + qMax)")
         if p['membraneCell'] > p['dMax']:
             bad('membraneCell', '%g m is larger than the largest grain, dMax = %g m: the membrane would not see the '
                 'grains it rests on' % (p['membraneCell'], p['dMax']))

@@ -54,7 +54,7 @@ class Recorder(CycleRecorder):
         H, V = membrane.height(), membrane.volume
         area = V / H
         qGrains = self.grainsForce() / area - membrane.pressure
-        peak = (p['confining'] + p['qMax']) * area
+        peak = (p['confining'] + p.peakDeviator()) * area
         inertial = quasistatic.inertialNumber(p, O.bodies[self.top].state.vel[2], H, self.grainsForce(), area, peak,
                                               ownStep)
         crushed, abraded, ratio = breakage.counts()
@@ -82,6 +82,6 @@ class Recorder(CycleRecorder):
             quasistatic.responseRatio(self.period, O.bodies[self.top].state.mass +
                                       quasistatic.bedMass(p, grains.arrays()[2], ownStep), loadRange, resilient),
             float(c['axialStrain'][-1]), float(c['volumetricStrain'][-1]), resilientStrain,
-            resilientModulus(p['qMax'] - p['qMin'], resilientStrain),
+            resilientModulus(p.peakDeviator() - p.seatDeviator(), resilientStrain),
             float(np.min(c['qGrains'])), float(np.max(c['qGrains']))])
         self.cpu, self.iter0 = time.process_time(), O.iter

@@ -1,9 +1,11 @@
-"""The load on the sleeper over one cycle (docs/box.md, "Load"): a sine between the seating and the
-peak load at a frequency, or a history read from a CSV (a measured train passage), repeated cycle after
-cycle. Plain NumPy: no YADE.
+"""The load of a cyclic experiment over one cycle (docs/box.md, "Load"; docs/triaxial.md): a sine between the
+seating and the peak load at a frequency, or a history read from a CSV (a measured train passage on a sleeper, a
+recorded deviator stress), repeated cycle after cycle. The box's load is a force F [N], the triaxial test's a
+deviator stress q [Pa]: the same history, its column named. Plain NumPy: no YADE.
 
     h = LoadHistory.sine(seat=3e3, peak=40e3, f=3.0)
     h = LoadHistory.fromCsv('passage.csv')          # columns t [s] and F [N], a row per sample
+    h = LoadHistory.fromCsv('q.csv', LoadHistory.DEVIATOR)   # columns t [s] and q [Pa]
     h.at(tau)                                       # the load [N] at time tau [s] since the start of cycling
     h.table()                                       # (times, forces) of one cycle for YADE's force engine
 
@@ -27,7 +29,11 @@ class LoadHistoryError(ValueError):
 
 
 class LoadHistory:
-    """One cycle of the load: times [s] from 0 to the period, forces [N]; see the module doc."""
+    """One cycle of the load: times [s] from 0 to the period, loads (forces [N] or stresses [Pa]); see the module
+    doc."""
+
+    FORCE = ('F', 'N', 'load')                   # the column, its unit and its name: the box's
+    DEVIATOR = ('q', 'Pa', 'deviator stress')    # the triaxial test's
 
     def __init__(self, times, forces, source):
         self.times, self.forces, self.source = np.asarray(times, float), np.asarray(forces, float), source
@@ -43,8 +49,10 @@ class LoadHistory:
         return cls(tau, seat + (peak - seat) * 0.5 * (1 - np.cos(2 * math.pi * f * tau)), 'sine')
 
     @classmethod
-    def fromCsv(cls, path):
-        """The history of a CSV file with a header naming the columns t [s] and F [N] (other columns ignored)."""
+    def fromCsv(cls, path, column=FORCE):
+        """The history of a CSV file with a header naming the columns t [s] and the load's (`column`: (name, unit,
+        what), FORCE by default: F [N]); other columns ignored."""
+        c, unit, what = column
         try:
             fh = open(path, newline='')
         except OSError as e:
@@ -53,10 +61,10 @@ class LoadHistory:
             rows = csv.reader(fh)
             header = next(rows, None)
             names = [h.strip() for h in header] if header else []
-            if 't' not in names or 'F' not in names:
-                raise LoadHistoryError('loadFile %s: line 1 must name the columns t (time [s]) and F (load [N]), got %r'
-                                       % (path, ','.join(names)))
-            it, iF = names.index('t'), names.index('F')
+            if 't' not in names or c not in names:
+                raise LoadHistoryError('loadFile %s: line 1 must name the columns t (time [s]) and %s (%s [%s]), got %r'
+                                       % (path, c, what, unit, ','.join(names)))
+            it, iF = names.index('t'), names.index(c)
             times, forces = [], []
             for line, row in enumerate(rows, start=2):
                 if not row or all(not c.strip() for c in row):
@@ -64,11 +72,11 @@ class LoadHistory:
                 try:
                     t, F = float(row[it]), float(row[iF])
                 except (IndexError, ValueError):
-                    raise LoadHistoryError('loadFile %s: line %d: expected numbers in columns t and F, got %r'
-                                           % (path, line, ','.join(row))) from None
+                    raise LoadHistoryError('loadFile %s: line %d: expected numbers in columns t and %s, got %r'
+                                           % (path, line, c, ','.join(row))) from None
                 if not (math.isfinite(t) and math.isfinite(F)) or F < 0:
-                    raise LoadHistoryError('loadFile %s: line %d: t = %r s, F = %r N: expected finite values, F >= 0'
-                                           % (path, line, t, F))
+                    raise LoadHistoryError('loadFile %s: line %d: t = %r s, %s = %r %s: expected finite values, %s >= 0'
+                                           % (path, line, t, c, F, unit, c))
                 if not times and t != 0:
                     raise LoadHistoryError('loadFile %s: line %d: the history starts at t = 0, got t = %r s'
                                            % (path, line, t))
@@ -81,11 +89,12 @@ class LoadHistory:
             raise LoadHistoryError('loadFile %s: %d row(s) of data; a cycle needs at least 2' % (path, len(times)))
         span = max(forces) - min(forces)
         if span <= 0:
-            raise LoadHistoryError('loadFile %s: the load never changes (F = %r N throughout): not a load cycle'
-                                   % (path, forces[0]))
+            raise LoadHistoryError('loadFile %s: the %s never changes (%s = %r %s throughout): not a load cycle'
+                                   % (path, what, c, forces[0], unit))
         if abs(forces[-1] - forces[0]) > CLOSE * span:
-            raise LoadHistoryError('loadFile %s: line %d: the cycle ends at F = %r N but starts at %r N; the next cycle '
-                                   'repeats it, so it must end where it starts' % (path, line, forces[-1], forces[0]))
+            raise LoadHistoryError('loadFile %s: line %d: the cycle ends at %s = %r %s but starts at %r %s; the next '
+                                   'cycle repeats it, so it must end where it starts' % (
+                                       path, line, c, forces[-1], unit, forces[0], unit))
         return cls(times, forces, path)
 
     @property
@@ -95,16 +104,16 @@ class LoadHistory:
 
     @property
     def seat(self):
-        """The seating load [N]: the load at the start (and end) of a cycle."""
+        """The seating load [N, Pa]: the load at the start (and end) of a cycle."""
         return float(self.forces[0])
 
     @property
     def peak(self):
-        """The largest load of the cycle [N]."""
+        """The largest load of the cycle [N, Pa]."""
         return float(np.max(self.forces))
 
     def at(self, tau):
-        """The load [N] at time tau [s] since cycling began (cycle after cycle), interpolated linearly."""
+        """The load [N, Pa] at time tau [s] since cycling began (cycle after cycle), interpolated linearly."""
         return np.interp(np.mod(tau, self.period), self.times, self.forces)
 
     def table(self):
