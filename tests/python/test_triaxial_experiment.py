@@ -14,6 +14,7 @@ import pytest
 pytest.importorskip('yade')
 from yade import O  # noqa: E402
 
+from ballast import harvest  # noqa: E402
 from ballast.experiments import cyclic  # noqa: E402
 from ballast.experiments.triaxial import TriaxialTest  # noqa: E402
 from ballast.experiments.triaxial.outputs import OWN_COLUMNS  # noqa: E402
@@ -99,6 +100,7 @@ def test_a_scripted_scaling_strains_by_hand(run):
         if hasattr(b.shape, 'radius'):
             b.shape.radius *= s
     m.cell, m.depth = s * m.cell, s * m.depth
+    harvest.refresh()   # radii changed by hand within a step: the grain table is read again (harvest's contract)
     m.update()
     assert axialStrain(H, m.height()) == pytest.approx(1 - s, rel=1e-9)
     assert volumetricStrain(V, m.volume) == pytest.approx(1 - s ** 3, rel=1e-6)
@@ -120,3 +122,53 @@ def test_the_seated_specimen_carries_the_cell_pressure_and_the_seating_deviator(
     assert stresses[0] == pytest.approx(p['confining'], rel=0.05)
     assert stresses[1] == pytest.approx(p['confining'], rel=0.05)
     assert stresses[2] == pytest.approx(p['confining'] + p['qMin'], rel=0.05)
+
+
+@pytest.fixture(scope='module')
+def mono(run):
+    """A drained monotonic compression of the same stored specimen to 3 % axial strain at 0.5 /s."""
+    test = TriaxialTest(results=os.path.dirname(run[2]), runId='mono',
+                        **dict(SMALL, monotonic=True, strainRate=0.5, maxAxialStrain=0.03))
+    s = test.run()
+    return test, s, pd.read_csv(os.path.join(test.out, 'monotonic.csv'))
+
+
+def test_monotonic_compression_is_driven_at_its_strain_rate(mono):
+    """Displacement control, by hand: the axial strain of every row is strainRate t from where it started (a row is
+    taken after the step's motion, before its time advances: eps0 = strainRate dt), and the test ends at
+    maxAxialStrain, within a row's span; it starts from the isotropic state (q within 2 % of p' at the first row)."""
+    test, s, m = mono
+    eps0 = m.axialStrain.iloc[0]
+    assert eps0 == pytest.approx(0.5 * O.dt, rel=1e-3) and abs(m.q.iloc[0]) < 0.02 * 60e3
+    assert (m.axialStrain - eps0 - 0.5 * m.t).abs().max() < 1e-9
+    # the end is checked every 100 steps: it stops within 100 steps of strain past 3 %, its last row within a row's span
+    assert 0.03 - 0.03 / 400 - 1e-9 <= m.axialStrain.iloc[-1] <= 0.03 + 100 * 0.5 * O.dt
+    assert m.p.to_numpy() == pytest.approx((60e3 + m.q / 3).to_numpy(), rel=1e-8)   # written to 9 digits
+
+
+def test_monotonic_peak_and_angles_by_hand(mono):
+    test, s, m = mono
+    k = int(m.q.idxmax())
+    assert s['qPeak'] == pytest.approx(m.q[k], rel=1e-8) and s['axialStrainAtPeak'] == pytest.approx(m.axialStrain[k],
+                                                                                                       rel=1e-8)
+    eta = m.q[k] / m.p[k]
+    assert s['frictionAnglePeak'] == pytest.approx(math.degrees(math.asin(3 * eta / (6 + eta))), rel=1e-7)   # 9 digits
+    assert 20 < s['frictionAnglePeak'] < 70   # a frictional packing with rolling resistance
+    for name in ('monotonic.png', 'grading.csv', 'summary.json', 'state-end.yade.gz'):
+        assert os.path.isfile(os.path.join(test.out, name)), name
+    assert s['test'] == 'monotonic' and s['massLedgerError'] == pytest.approx(0, abs=1e-12)
+
+
+def test_the_angles_closed_forms():
+    from ballast.experiments.triaxial import monotonic
+    assert monotonic.frictionAngle(1.2, 1.0) == pytest.approx(30.0, rel=1e-12)   # sin phi = 3.6 / 7.2
+    assert monotonic.dilatancyAngle(-2 / 3) == pytest.approx(math.degrees(math.asin(0.25)), rel=1e-12)
+    assert monotonic.dilatancyAngle(0.0) == 0.0   # no volume change: no dilatancy
+
+
+def test_monotonic_refuses_the_options_of_cycles():
+    from ballast.experiments.triaxial import check
+    from ballast.params import ParamError
+    for k, v in (('quasiStatic', 1e-3), ('jump', True)):
+        with pytest.raises(ParamError, match='TriaxialTest: %s = .* not a monotonic compression' % k):
+            check(dict(monotonic=True, **{k: v}, **({'fatigue': True} if k == 'jump' else {})))

@@ -18,13 +18,14 @@ from yade import O, Vector3, plot
 from ... import runtime
 from ...params import requireWritableDir, validate
 from ...settlementlaws import bedChanged
-from .. import breakage, chain, grains, preparation, scene
+from .. import breakage, chain, grains, preparation, quasistatic, scene
 from ..base import Experiment
 from ..cyclic import Cyclic, appendSample
-from . import outputs, specimen
+from . import monotonic, outputs, specimen
 from .membrane import Membrane
 from .parameters import OWNER, PARAMS, TriaxialParameters
 from .recorder import Recorder
+from .strains import axialStrain, volumetricStrain
 
 PRESS, SAMPLER, FRAMES = 'triaxialPress', 'triaxialSampler', 'triaxialFrames'
 CONSOLIDATED = (0.02, 1e-5, 1e-5)   # ([s], [-], [-]): at rest when over that time the platen moved less than this
@@ -54,6 +55,7 @@ class TriaxialTest(Cyclic, Experiment):
         self.initial, self.gradings, self.frames = None, [], []
         self.target = None
         self.cycling = False
+        self.compression = None    # the monotonic compression under way: t0, H0, V0, rows (monotonic.COLUMNS)
         Experiment.__init__(self, parameters, **params)
 
     def pieces(self):
@@ -128,6 +130,9 @@ class TriaxialTest(Cyclic, Experiment):
         m = self.membrane
         m.pressure = self.p['confining'] * min(1.0, (O.time - self.tConsolidate) / RAMP)
         m.update()
+        if self.compression is not None:   # the platen moves at its speed: no load on it
+            O.forces.setPermF(self.rig.top, Vector3(0, 0, 0))
+            return
         area = m.volume / m.height()
         weight = O.bodies[self.rig.top].state.mass * -scene.GRAVITY[2]
         O.forces.setPermF(self.rig.top, Vector3(0, 0, weight - (m.pressure + self.deviator()) * area))
@@ -194,6 +199,8 @@ class TriaxialTest(Cyclic, Experiment):
         """Run `cycles` more load cycles (default the parameter's), then write every output and save the state.
         Returns the summary."""
         p = self.p
+        if p['monotonic']:
+            return self.compress()
         n = p['cycles'] if cycles is None else validate(OWNER + '.load', {'cycles': PARAMS['cycles']}, 'cycles', cycles)
         if self.recorder is None:
             if self.rig is None:
@@ -231,7 +238,66 @@ class TriaxialTest(Cyclic, Experiment):
         return s
 
     def summary(self):
-        return outputs.summary(self)
+        return outputs.monotonicSummary(self) if self.compression is not None else outputs.summary(self)
+
+    # ------------------------------------------------------------------ the monotonic compression
+    def compress(self):
+        """The drained monotonic compression (monotonic.py): the consolidated specimen's top platen driven down at
+        strainRate times its height (its degrees of freedom blocked: displacement control), the membrane holding p',
+        the crushing and abrasion engines on, until the axial strain reaches maxAxialStrain; monotonic.csv,
+        monotonic.png, grading.csv and summary.json. Returns the summary."""
+        p = self.p
+        if self.rig is None:
+            self.prepare()
+        m, top = self.membrane, O.bodies[self.rig.top]
+        t0 = O.time
+        duration = p['maxAxialStrain'] / p['strainRate']
+        self.compression = {'t0': t0, 'H0': m.height(), 'V0': m.volume, 'rows': []}
+        top.state.blockedDOFs = 'xyzXYZ'
+        top.state.vel = Vector3(0, 0, -p['strainRate'] * self.compression['H0'])
+        top.state.angVel = Vector3(0, 0, 0)
+        self.addEngines(t0)
+        x, r, mass = grains.arrays()
+        self.initial = {'massInitial': float(np.sum(mass)), 'nGrainsInitial': len(r),
+                        'diameters': grains.sieve()[0].tolist(), 'masses': mass.tolist()}
+        self.gradings = [breakage.grading(self, 0)]
+        self.startTimeStep(None)
+        O.engines = O.engines + [runtime.callback(self, 'sampleCompression', virtPeriod=duration / monotonic.ROWS,
+                                                  virtLast=t0, initRun=True, label=SAMPLER)]
+        self.say('monotonic compression at %g /s (%.4g m/s) under p\' = %g kPa to %g %% axial strain, dt = %.3g s' % (
+            p['strainRate'], p['strainRate'] * self.compression['H0'], p['confining'] / 1e3,
+            100 * p['maxAxialStrain'], O.dt))
+        rows = self.compression['rows']
+        self.runUntil(lambda: self.axialStrainNow() >= p['maxAxialStrain'], tEnd=t0 + 1.05 * duration,
+                      phase='compress', checkEvery=100, simSpan=duration, simStart=t0,
+                      extra=lambda: 'axial strain %.2f %%, q %.1f kPa, volumetric %.3f %%' % (
+                          100 * self.axialStrainNow(), rows[-1][3] / 1e3 if rows else 0.0,
+                          100 * rows[-1][2] if rows else 0.0))
+        self.grade(1)
+        s = self.finishRun(lambda: outputs.writeMonotonic(self))
+        self.say('done: peak q %.1f kPa at %.2f %% axial strain (friction angle %.1f deg), volumetric %.3f %% at the '
+                 'end; results in %s' % (s['qPeak'] / 1e3, 100 * s['axialStrainAtPeak'], s['frictionAnglePeak'],
+                                          100 * s['volumetricStrainEnd'], self.out))
+        return s
+
+    def axialStrainNow(self):
+        c = self.compression
+        return axialStrain(c['H0'], self.membrane.height())
+
+    def sampleCompression(self):
+        """A row of monotonic.csv (monotonic.COLUMNS): the deviator the grains carry on the top platen over the
+        area the membrane encloses, less p'; the strains from the boundary; the inertial number of the compression."""
+        c, m, p = self.compression, self.membrane, self.p
+        H, V = m.height(), m.volume
+        area = V / H
+        force = O.forces.f(self.rig.top)[2] - O.forces.permF(self.rig.top)[2]   # the grains' push, upward
+        q = force / area - m.pressure
+        mean = m.pressure + q / 3
+        crushed, abraded, _ = breakage.counts()
+        inertial = quasistatic.inertialNumber(p, O.bodies[self.rig.top].state.vel[2], H, force, area,
+                                              (p['confining'] + p['qMax']) * area, self.ownStep())
+        c['rows'].append([O.time - c['t0'], axialStrain(c['H0'], H), volumetricStrain(c['V0'], V), q, mean,
+                          q / mean if mean else float('nan'), crushed, abraded, inertial])
 
     # ------------------------------------------------------------------ saving
     def state(self):
@@ -239,7 +305,7 @@ class TriaxialTest(Cyclic, Experiment):
                     recorder=runtime.ref(self.recorder), jumper=runtime.ref(self.jumper),
                     stepChoice=runtime.ref(self.stepChoice), porosity=self.porosity, specimenFile=self.specimenFile,
                     consolidated=self.consolidated, tConsolidate=self.tConsolidate, tSeat=self.tSeat, initial=self.initial, gradings=self.gradings, frames=self.frames, target=self.target,
-                    cycling=self.cycling)
+                    cycling=self.cycling, compression=self.compression)
 
     @classmethod
     def fromState(cls, s, ref):
@@ -251,4 +317,5 @@ class TriaxialTest(Cyclic, Experiment):
         for k in ('porosity', 'specimenFile', 'consolidated', 'tConsolidate', 'tSeat', 'initial', 'gradings', 'frames',
                   'target', 'cycling'):
             setattr(exp, k, s[k])
+        exp.compression = s.get('compression')   # states of before the monotonic compression have none
         return exp

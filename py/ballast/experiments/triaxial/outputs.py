@@ -10,6 +10,9 @@
 * summary.json  the run: strains, the specimen (porosity in the mould and consolidated), crushes, the mass ledger, CPU
 * strains.png   permanent axial and volumetric strain against N (log N), the measured curves of `reference` over them
 * triaxial.pvd  with vtk: the grains, the contacts and the membrane every vtk cycles and at the end (ParaView)
+
+A monotonic compression (monotonic 1) writes instead monotonic.csv (a row per sample: monotonic.COLUMNS), monotonic.png,
+grading.csv (before and after) and summary.json (the peak, its friction and dilatancy angles).
 """
 import json
 import math
@@ -72,14 +75,18 @@ def summary(exp):
                           else rec.period / O.dt), **cyclic.jumpSummary(cyc, exp.jumper)}
 
 
+def gradingTable(exp):
+    """grading.csv: a row per grading taken (its cycle, B_g, B_r, BBI, the percentage passing each sieve)."""
+    return pd.DataFrame([dict({'cycle': x['cycle'], 'Bg': x['Bg'], 'Br': x['Br'], 'BBI': x['BBI']},
+                              **{'P%g' % a: v for a, v in zip(gr.SIEVES_MM, x['passing'])}) for x in exp.gradings])
+
+
 def write(exp):
     """Every output file; returns the summary."""
     out = exp.out
     s = summary(exp)
     cyc = cycleTable(exp)
-    g = pd.DataFrame([dict({'cycle': x['cycle'], 'Bg': x['Bg'], 'Br': x['Br'], 'BBI': x['BBI']},
-                           **{'P%g' % a: v for a, v in zip(gr.SIEVES_MM, x['passing'])}) for x in exp.gradings])
-    for name, df in (('cycles.csv', cyc), ('grading.csv', g)):
+    for name, df in (('cycles.csv', cyc), ('grading.csv', gradingTable(exp))):
         writeAtomic(os.path.join(out, name), df.to_csv(index=False, float_format='%.9g'))
     writeAtomic(os.path.join(out, 'summary.json'), json.dumps(strictJson(s), indent=1) + '\n')
     figure(cyc, os.path.join(out, 'strains.png'), exp.p.references())
@@ -133,3 +140,41 @@ def figure(cycles, path, references=()):
     axes[1].set_xlabel('load cycles N')
     fig.suptitle('Permanent strains of the triaxial specimen')
     return saveFigure(fig, path)
+
+
+def monotonicSummary(exp):
+    """summary.json of a monotonic compression: the peak (monotonic.peak), the specimen, crushes, the mass ledger, CPU."""
+    from . import monotonic
+    p, c = exp.p, exp.compression
+    x, r, m = grains.arrays()
+    lost = massLost()
+    wall, cpu = exp.seconds()
+    rows = c['rows']
+    return {
+        'experiment': exp.NAME, 'runId': exp.runId, 'params': dict(p), 'test': 'monotonic',
+        **(monotonic.peak(rows) if rows else {}), 'rows': len(rows),
+        'inertialMax': float(np.nanmax([row[8] for row in rows])) if rows else math.nan,
+        'nCrushed': int(sum(e.nCrushed for e in engines() if isinstance(e, BallastCrushEngine))),
+        'nAbraded': int(sum(e.nAbraded for e in engines() if isinstance(e, BallastAbrasionEngine))),
+        'nGrainsInitial': exp.initial['nGrainsInitial'], 'nGrains': len(r), 'porosityMould': exp.porosity,
+        'consolidated': exp.consolidated, 'specimenFile': exp.specimenFile,
+        'massInitial': exp.initial['massInitial'], 'massGrains': float(np.sum(m)), 'massLost': lost,
+        'massLedgerError': float(np.sum(m)) + lost - exp.initial['massInitial'],
+        'gradings': [{k: g[k] for k in ('cycle', 'Bg', 'Br', 'BBI')} for g in exp.gradings],
+        'dt': O.dt, 'steps': O.iter, 'wallSeconds': wall, 'cpuSeconds': cpu}
+
+
+def writeMonotonic(exp):
+    """monotonic.csv, monotonic.png, grading.csv (before and after: cycle 0 and 1) and summary.json; returns the
+    summary."""
+    from . import monotonic
+    out = exp.out
+    s = monotonicSummary(exp)
+    frame = pd.DataFrame(exp.compression['rows'], columns=list(monotonic.COLUMNS))
+    for name, df in (('monotonic.csv', frame), ('grading.csv', gradingTable(exp))):
+        writeAtomic(os.path.join(out, name), df.to_csv(index=False, float_format='%.9g'))
+    writeAtomic(os.path.join(out, 'summary.json'), json.dumps(strictJson(s), indent=1) + '\n')
+    monotonic.figure(exp.compression['rows'], os.path.join(out, 'monotonic.png'),
+                     'Drained monotonic compression, p\' = %g kPa, %g /s: %s' % (
+                         exp.p['confining'] / 1e3, exp.p['strainRate'], exp.runId))
+    return s

@@ -56,6 +56,14 @@ PARAMS = {
                       'cycle from t = 0, ending at the deviator it starts at (its first q seats the specimen, as '
                       'qMin does)', anyText, 'a path', text),
     'cycles': Param(10, '-', 'load cycles of one load()', positiveInt, 'an integer >= 1'),
+    # the monotonic drained compression (docs/triaxial.md, "Monotonic compression")
+    'monotonic': Param(False, '-', 'instead of cycles, a drained monotonic compression: the top platen driven down at '
+                       'strainRate under p\' until maxAxialStrain', boolean, '0 or 1', flag),
+    'strainRate': Param(0.05, '1/s', 'axial strain rate of the monotonic compression (the platen\'s speed over the '
+                        'consolidated height; quasi-static while the inertial number, reported, stays below 1e-3)',
+                        between(1e-4, 10.0), 'a number in [1e-4, 10)'),
+    'maxAxialStrain': Param(0.15, '-', 'axial strain at which the monotonic compression ends', between(0.005, 0.5),
+                            'a number in [0.005, 0.5)'),
     'samples': Param(50, '-', 'rows of samples.csv per cycle (the strains and the stress path)', intBetween(20, 100000),
                      'an integer in [20, 100000]'),
     'reference': Param('', 'path', 'measured curves drawn over the simulated ones in strains.png: CSV files with a header '
@@ -113,7 +121,10 @@ class TriaxialParameters(ExperimentParameters):
         return h.period if h else 1.0 / self['f']
 
     def seatDeviator(self):
-        """The deviator at each cycle's start and end [Pa]: qMin, or the history's first."""
+        """The deviator at each cycle's start and end [Pa]: qMin, or the history's first; 0 before a monotonic
+        compression (it starts from the isotropic state)."""
+        if self['monotonic']:
+            return 0.0
         h = self.history()
         return h.seat if h else self['qMin']
 
@@ -160,6 +171,12 @@ class TriaxialParameters(ExperimentParameters):
             bad('qMin', 'must be smaller than qMax = %g Pa' % p['qMax'])
         if p['loadFile']:
             self.checkLoadFile(('qMin', 'qMax', 'f'), 'deviator')
+        if p['monotonic']:
+            for k in ('loadFile', 'quasiStatic', 'jump'):
+                if p[k]:
+                    bad(k, 'is for load cycles, not a monotonic compression (monotonic 1): %s' % (
+                        'give densityStep or timeStep stiffness for fewer steps' if k == 'quasiStatic' else
+                        'leave it out'))
         self.checkStress('loadFile' if p['loadFile'] else 'qMax' if p['qMax'] >= p['confining'] else 'confining',
                          p['confining'] + self.peakDeviator(), "the specimen's ends at the peak (confining + qMax)")
         if p['membraneCell'] > p['dMax']:
