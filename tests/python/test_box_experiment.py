@@ -275,6 +275,9 @@ def test_a_run_in_slices_goes_on_from_a_state_and_refuses_other_physics(run, tmp
     s2 = slice2.run()
     cyc = pd.read_csv(os.path.join(str(tmp_path), 'slice2', 'cycles.csv'))
     assert list(cyc.cycle) == [1, 2, 3, 4] and s2['cycles'] == 4 and s2['params']['continueFrom'] == first
+    with open(os.path.join(str(tmp_path), 'slice2', 'run.json')) as fh:   # its provenance (it said "None" before)
+        status = json.load(fh)
+    assert status['continuesState'] == first and status['continues'] == test.out
     # the state slice 2 started from is gone (another machine, a removed checkout): slice 2's own state still
     # reopens, saying where it came from, and a third slice goes on from it
     os.remove(first)

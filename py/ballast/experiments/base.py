@@ -262,10 +262,11 @@ class Experiment:
         self.started, self.cpuStarted = time.time(), time.process_time()
 
     @classmethod
-    def fromScene(cls, readOnly=False, **overrides):
+    def fromScene(cls, readOnly=False, source=None, **overrides):
         """The experiment saved in the current scene, rebuilt (ballast.runtime.restore). It writes into a new
         run directory (<results>/<run id>-2, ... unless results or runId are given) when it first writes;
-        readOnly=True: never (for inspecting a finished run)."""
+        readOnly=True: never (for inspecting a finished run). source: the state file it came from; run.json of the
+        run that goes on names it (continuesState) and the saved run's folder (continues)."""
         bad = sorted(k for k in overrides if k not in cls.REOPEN_PARAMS)
         if bad:
             raise TypeError('%s.reopen: %s cannot be changed in a saved run (only %s)' % (
@@ -279,8 +280,10 @@ class Experiment:
         exp.p = exp.p.replace(**overrides)
         if readOnly or 'results' in overrides or 'runId' in overrides:
             exp.dir = RunDirectory(exp.p['results'], overrides.get('runId', old.wanted), readOnly)
+            exp.dir.previous = old.previous or old.path   # the saved run's folder (a restored one holds it as previous)
             runtime.unregister(old)
             exp.adopt()
+        exp.dir.source = source
         exp.phases.progressSeconds = exp.p['progress']
         exp.reopened()
         return exp
@@ -366,4 +369,4 @@ class Experiment:
         if cls.persistentType not in saved and others:
             raise StateFileError('%s: %s is a state of another experiment (it holds a saved %s, not a %s)' % (
                 who, path, others[0], cls.persistentType))
-        return cls.fromScene(readOnly=readOnly, **overrides)
+        return cls.fromScene(readOnly=readOnly, source=os.path.abspath(path), **overrides)

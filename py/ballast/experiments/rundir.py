@@ -116,6 +116,7 @@ class RunDirectory:
     def __init__(self, results, runId, readOnly=False):
         self.results, self.wanted, self.readOnly = results, runId, readOnly
         self.runId = self.path = self.previous = None
+        self.source = None   # the state file a reopened run goes on from (its provenance in run.json)
 
     def create(self):
         """The folder's path, made now if it is not yet."""

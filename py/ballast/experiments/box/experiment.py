@@ -199,8 +199,8 @@ class BoxTest(Cyclic, Experiment):
             self.startCycling()
         if self.out is None:   # a reopened run writes into a folder of its own
             self.dir.create()
-            self.markRunning(continues=self.dir.previous)
-            self.say('run %s goes on from %s -> %s' % (self.runId, self.dir.previous, self.out))
+            self.markRunning(continues=self.dir.previous, continuesState=self.dir.source)
+            self.say('run %s goes on from %s -> %s' % (self.runId, self.dir.source or self.dir.previous, self.out))
         self.syncJumping()
         self.startFrames()
         self.target = self.cyclesDone() + n

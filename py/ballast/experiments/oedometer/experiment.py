@@ -332,7 +332,7 @@ class Oedometer(Cyclic, Experiment):
         self.restored()
         if not self.dir.readOnly:
             self.dir.create()
-            self.markRunning(continues=self.dir.previous, fromIter=O.iter)
+            self.markRunning(continues=self.dir.previous, continuesState=self.dir.source, fromIter=O.iter)
         self.say('reopened %s at t = %.6f s (loading time %.6f s) -> %s' % (
             self.dir.wanted, O.time, O.time - self.loading.t0, self.out or 'read only, no run directory'))
 

@@ -208,7 +208,7 @@ class TriaxialTest(Cyclic, Experiment):
             self.startCycling()
         if self.out is None:   # a reopened run writes into a folder of its own
             self.dir.create()
-            self.markRunning(continues=self.dir.previous)
+            self.markRunning(continues=self.dir.previous, continuesState=self.dir.source)
         self.syncJumping()
         self.startFrames()
         self.target = self.cyclesDone() + n
