@@ -126,11 +126,18 @@ def checkKilled(out, root, name):
     with open(os.path.join(out, 'run.json')) as fh:
         status = json.load(fh)
     assert status['status'] == 'running' and status['lastState'] in states
+    # a copy under another name whose run.json names an older state: the rebuild goes into the copy's name -2 (not
+    # the run id the state holds) from the newest intact state (not the one run.json names)
+    copy = out + '-copy'
+    shutil.copytree(out, copy)
+    older = sorted(states, key=lambda f: os.path.getmtime(os.path.join(out, f)))[0]
+    with open(os.path.join(copy, 'run.json'), 'w') as fh:
+        json.dump(dict(status, lastState=older), fh)
     p = subprocess.run([shutil.which('yade'), '-n', '-x', os.path.join(os.path.dirname(os.path.dirname(
-        os.path.dirname(os.path.abspath(__file__)))), 'scripts', 'oedometer.py'), '--rebuild', out],
+        os.path.dirname(os.path.abspath(__file__)))), 'scripts', 'oedometer.py'), '--rebuild', copy],
         env=dict(os.environ, OMP_NUM_THREADS='1'), capture_output=True, text=True, timeout=TIMEOUT)
     assert p.returncode == 0, p.stdout[-2000:] + p.stderr[-2000:]
-    rebuilt = out + '-2'
+    rebuilt = copy + '-2'
     with open(os.path.join(rebuilt, 'summary.json')) as fh:
         s = json.load(fh)
     last = Oedometer.reopen(os.path.join(out, status['lastState']), readOnly=True)
@@ -205,3 +212,13 @@ def test_damaged_states_are_refused_naming_the_file_and_the_cause(first, tmp_pat
         assert name in lines, p.stdout[-3000:] + p.stderr[-3000:]
         assert 'StateFileError' in lines[name] and str(tmp_path / (name + '.yade.gz')) in lines[name], lines[name]
         assert cause in lines[name] and ' | ' not in lines[name], lines[name]
+
+
+def test_rebuild_takes_no_other_option(tmp_path):
+    """--rebuild writes the saved run's outputs as the run was: an option beside it would be ignored, so it is
+    refused in one line before any work."""
+    p = subprocess.run([shutil.which('yade'), '-n', '-x', os.path.join(os.path.dirname(os.path.dirname(
+        os.path.dirname(os.path.abspath(__file__)))), 'scripts', 'oedometer.py'), '--rebuild', str(tmp_path),
+        '--ft0', '1e6'], env=dict(os.environ, OMP_NUM_THREADS='1'), capture_output=True, text=True, timeout=TIMEOUT)
+    lines = [ln for ln in p.stderr.splitlines() if ln.startswith('oedometer.py:')]
+    assert p.returncode == 2 and len(lines) == 1 and '--rebuild takes no other option (got --ft0)' in lines[0]

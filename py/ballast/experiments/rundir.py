@@ -55,10 +55,11 @@ def checkStateFile(path, who='reopen'):
 TEMPORARY_PREFIX = '.tmp-'   # a state being written (Experiment.save): .tmp-<pid>-<name>, renamed when whole
 
 
-def resumableState(folder):
+def resumableState(folder, preferLast=True):
     """The state a killed run in `folder` goes on from: (path, what was wrong with the obvious one, or None), or
-    (None, why not). The obvious one is run.json's lastState; when run.json is damaged or names none, or that state
-    is damaged (checkStateFile), the newest intact state-*.yade.gz of the folder (by time). A finished run (run.json
+    (None, why not). The obvious one is run.json's lastState (preferLast; else the newest); when run.json is damaged
+    or names none, or that state is damaged (checkStateFile), the newest intact state-*.yade.gz of the folder (by
+    time). A finished run (run.json
     'finished', or summary.json beside no 'running') is not resumed. Temporary files of a save a kill cut off are
     removed."""
     from ..runfiles import runStatus
@@ -79,7 +80,7 @@ def resumableState(folder):
         problems.append('run.json names no last state')
     states = [n for n in os.listdir(folder) if n.startswith('state-') and n.endswith('.yade.gz')]
     order = sorted(states, key=lambda n: os.path.getmtime(os.path.join(folder, n)), reverse=True)
-    if last in order:
+    if last in order and preferLast:
         order.remove(last)
         order.insert(0, last)
     elif last is not None:

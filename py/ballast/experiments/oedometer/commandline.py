@@ -32,8 +32,13 @@ def main(argv=None):
     """The command line: exit status 2 and a message naming the parameter on a bad value."""
     from yade import utils
     argv = sys.argv[1:] if argv is None else argv
-    rebuild = commandline.parse(parser(), argv)[REBUILD]
+    given = commandline.parse(parser(), argv)
+    rebuild = given[REBUILD]
     if rebuild is not None:
+        others = sorted(k for k, v in given.items() if v is not None and k != REBUILD)
+        if others:   # the saved run's parameters are its own: an option beside --rebuild would be ignored
+            parser().refuse('--rebuild takes no other option (got --%s): it writes the saved run\'s outputs as the run '
+                            'was, into RUNDIR-2' % ', --'.join(others))
         from .experiment import Oedometer
         try:
             run = Oedometer.rebuild(rebuild)

@@ -23,7 +23,6 @@ saved), ``"finished"`` once every output is written. A run killed on the way (``
 summary.json) gets its outputs up to its last state back with ``Oedometer.rebuild(runDir)``
 (``yade -x -n scripts/oedometer.py --rebuild RUNDIR``): into a new folder <run id>-2.
 """
-import glob
 import math
 import os
 
@@ -33,12 +32,13 @@ from yade import O
 from ... import runtime
 from ...names import fmtTime
 from ...params import validate
-from ...runfiles import runStatus, writeAtomic
+from ...runfiles import writeAtomic
 from ..parameters import CYCLE_JUMP
 from .. import chain, grains
 from ...settlementlaws import bedChanged
 from ..base import Experiment
 from ..cyclic import Cyclic
+from ..rundir import resumableState
 from .loading import MODES
 from .outputs import Outputs
 from .packing import StoredPacking
@@ -338,26 +338,21 @@ class Oedometer(Cyclic, Experiment):
 
     @classmethod
     def rebuild(cls, runDir, **overrides):
-        """The outputs of a killed run (run.json 'running', no summary.json) up to its last state: reopened
-        and finished as it is (no last row), into a new folder <run id>-2. runDir: the run's folder or a
-        state file. Returns the experiment."""
-        state = runDir if os.path.isfile(runDir) else lastState(runDir)
-        exp = cls.reopen(state, **overrides)
+        """The outputs of a killed run (run.json 'running', no summary.json) up to its newest intact state:
+        reopened and finished as it is (no last row), into a new folder RUNDIR-2 beside it (whatever run id the
+        state holds). runDir: the run's folder or a state file. Returns the experiment. RuntimeError where the
+        folder holds no state to rebuild from (a finished run, damaged states: why, in one line)."""
+        if os.path.isfile(runDir):
+            state, folder = runDir, os.path.dirname(os.path.abspath(runDir))
+        else:
+            folder = os.path.abspath(runDir)
+            state, why = resumableState(folder, preferLast=False)
+            if state is None:
+                raise RuntimeError('nothing to rebuild in %s: %s' % (runDir, why))
+        where = {'results': os.path.dirname(folder), 'runId': os.path.basename(folder)}
+        exp = cls.reopen(state, **dict(where, **overrides))
         exp.finish(atEnd=False)
         return exp
-
-
-def lastState(runDir):
-    """The last state a run saved: run.json's lastState, else state-end, else the saveEvery state of the
-    highest iteration, else state-start."""
-    named = [(runStatus(runDir) or {}).get('lastState') or '']
-    # the checkpoints, by cycles done (state-iter*: the older name, by iteration)
-    iters = sorted(os.path.basename(f) for f in glob.glob(os.path.join(runDir, 'state-iter*.yade.gz')))
-    iters += sorted(os.path.basename(f) for f in glob.glob(os.path.join(runDir, 'state-cycle*.yade.gz')))
-    for name in named + ['state-end.yade.gz'] + iters[::-1] + ['state-start.yade.gz']:
-        if name and os.path.isfile(os.path.join(runDir, name)):
-            return os.path.join(runDir, name)
-    raise FileNotFoundError('Oedometer.rebuild: no state file in %s (run.json, state-*.yade.gz)' % runDir)
 
 
 __all__ = ['Oedometer', 'PARAMS']
