@@ -7,6 +7,7 @@ and stopped at the end.
 Everything runs as the user runs it: the scripts as subprocesses, each with a bounded timeout.
 SCRIPT (default scripts/oedometer.py) is the oedometer they run."""
 import csv
+import fcntl
 import json
 import math
 import os
@@ -238,12 +239,17 @@ def test_status_says_what_finished_failed_and_how_far_a_started_run_has_come(stu
     attempt = d / 'work' / (GOOD[1] + '.abc123')
     attempt.mkdir(parents=True)
     (attempt / 'run.log').write_text('[oedometer 12.0s] load  t=0.1 s  step 100  dt=1e-06 s   42.5% of loading  ETA 3m10s\n')
+    lock = open(d / 'work' / (GOOD[1] + '.lock'), 'a')   # its runner alive: holding the row's lock
+    fcntl.flock(lock, fcntl.LOCK_EX | fcntl.LOCK_NB)
     p = run([STUDY, 'status', str(d)])
     assert p.returncode == 0, p.stdout_text
     lines = p.stdout_text.splitlines()
     assert lines[0].endswith('3 rows: 1 failed, 1 finished, 1 todo'), lines
     assert lines[1].startswith('  failed: %s: ' % BAD)
-    assert lines[2].startswith('  started: %s: 42.5%% of loading, ETA 3m10s, its log written ' % GOOD[1]), lines
+    assert lines[2].startswith('  running: %s: 42.5%% of loading, ETA 3m10s, its log written ' % GOOD[1]), lines
+    lock.close()   # its runner killed: the lock file stays, nobody holds it (it said "started" before)
+    lines = run([STUDY, 'status', str(d)]).stdout_text.splitlines()
+    assert lines[2].startswith('  killed: %s: its runner ended without an end recorded' % GOOD[1]), lines
 
 
 def test_aggregate_mean_and_std_by_hand(study, tmp_path):

@@ -85,6 +85,23 @@ def rowLock(work, runId):
         fh.close()  # its holder removed this file as it let it go: take the file there now
 
 
+def rowHeld(work, runId):
+    """Whether a live runner holds the run's lock (work/<run id>.lock): True, False (the file is there and nobody holds
+    it: its runner died), or None (no lock file). Reads only: never creates the file."""
+    path = os.path.join(work, runId + '.lock')
+    try:
+        fh = open(path, 'r')
+    except FileNotFoundError:
+        return None
+    with fh:
+        try:
+            fcntl.flock(fh, fcntl.LOCK_SH | fcntl.LOCK_NB)
+        except BlockingIOError:
+            return True
+        fcntl.flock(fh, fcntl.LOCK_UN)
+        return False
+
+
 def releaseRow(lock):
     """Let a run's lock go; the file is removed first, so nobody takes a lock on a name that is gone."""
     try:

@@ -7,7 +7,7 @@ import time
 
 from ..names import fmtTime
 from ..runfiles import readSummary, writeAtomic
-from .attempts import KEEP, failedLog, keptState, lastError, newestLog, runProgress
+from .attempts import KEEP, failedLog, keptState, lastError, newestLog, rowHeld, runProgress
 from .options import StudyError
 from .runner import finalizeShipped
 
@@ -144,11 +144,16 @@ def status(out):
     for rid in counts.get('failed', []):
         log = os.path.join(out, 'logs', rid + '.log')
         print('  failed: %s: %s (log %s)' % (rid, lastError(log), log))
-    for rid in counts.get('todo', []):  # started and not ended: running, or its runner died (the log's age says)
-        log = newestLog(os.path.join(out, 'work'), rid)
+    for rid in counts.get('todo', []):  # started and not ended: running, or its runner died (its lock says which)
+        work = os.path.join(out, 'work')
+        log = newestLog(work, rid)
         if log is not None:
-            print('  started: %s: %s, its log written %s ago (%s)' % (
-                rid, runProgress(os.path.join(out, 'work'), rid) or 'no progress line yet',
+            alive = rowHeld(work, rid)
+            print('  %s: %s: %s, its log written %s ago (%s)' % (
+                'running' if alive else 'killed', rid,
+                (runProgress(work, rid) or 'no progress line yet') if alive else
+                'its runner ended without an end recorded (killed, or its machine went down); the next start runs it '
+                'again (from its kept state if it saved one)',
                 fmtTime(max(0, time.time() - os.path.getmtime(log))), log))
         state = keptState(os.path.join(out, KEEP), rid)
         if state is not None:
