@@ -73,6 +73,7 @@ def test_a_short_run_writes_every_output(run):
     for name in ('cycles.csv', 'samples.csv', 'grading.csv', 'crushes.csv', 'zones.csv', 'summary.json',
                  'settlement.png', 'breakage.png', 'grading.png', 'state-start.yade.gz', 'state-end.yade.gz'):
         assert os.path.isfile(os.path.join(test.out, name)), name
+    assert s['warnings'] == []   # a sleeper seated on its bed: within the range of a box test
     cyc = pd.read_csv(os.path.join(test.out, 'cycles.csv'))
     assert list(cyc.cycle) == [1, 2, 3] and s['cycles'] == 3
     assert np.allclose(cyc.t, [0.025, 0.05, 0.075], atol=0.025 / SMALL.get('samples', 100) + 1e-4)
@@ -307,6 +308,8 @@ def test_a_sleeper_that_reaches_the_floor_stops_the_run(tmp_path):
     assert cyc.settlement.iloc[-1] == pytest.approx(last, rel=1e-8) and s['settlement'] == pytest.approx(last, rel=1e-8)
     assert s['nCrushed'] == cyc.nCrushed.iloc[-1] == cyc.crushes.sum() == len(crushes) > 0
     assert crushes.cycle.max() <= s['stoppedInCycle'] and grading.cycle.iloc[-1] == s['stoppedInCycle']
+    # on its way down it left the range a box test is for: said once, in the log and the summary
+    assert [w.split()[0] for w in s['warnings']].count('settlement') == 1, s['warnings']
 
 
 def test_a_state_saved_before_the_new_floors_reopens_and_goes_on(tmp_path):

@@ -37,6 +37,8 @@ def test_grain_crushes_when_and_only_when_sigma_e_exceeds_ft(ratio):
         a = crush.eventsArray()
         assert a.shape == (1,) and a['id'][0] == g and a['nNew'][0] == 6 and a['value'][0] == e['value']
         assert (a['x'][0], a['y'][0], a['z'][0]) == (0.0, 0.0, 0.0)   # the grain sat at the origin
+        header = str(a).splitlines()[0].split()   # printed as a table with its column names
+        assert header == ['t', 'iter', 'id', 'x', 'y', 'z', 'radius', 'value', 'strength', 'nNew']
     else:
         assert crush.nCrushed == 0 and O.bodies[g] is not None
         assert crush.maxCrushableRatio == crush.maxStressRatio  # rMin = 0: every grain can crush

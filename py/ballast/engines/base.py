@@ -24,6 +24,19 @@ PERIODIC_STATE = ('iterLast', 'virtLast', 'realLast', 'nDone')
 TIMING = ('execTime', 'execCount')   # YADE's Engine timing, which yade.timing.reset() sets to 0
 
 
+class Records(np.ndarray):
+    """A NumPy structured array that prints as a table with its column names (a bare structured array prints its
+    rows as tuples, the names nowhere); indexing, slicing and a['column'] are NumPy's."""
+
+    def __repr__(self):
+        import pandas as pd
+        if self.dtype.names is None:   # a column taken out of it: a plain array
+            return repr(self.view(np.ndarray))
+        return pd.DataFrame(np.atleast_1d(self.view(np.ndarray))).to_string(max_rows=40)   # every column
+
+    __str__ = __repr__
+
+
 def requireAPeriod(owner, periods):
     """A PeriodicEngine whose periods are all 0 never runs: refuse it."""
     if not any(v > 0 for v in periods.values()):
@@ -121,11 +134,12 @@ class BallastEngine(runtime.Runner):
         return eng
 
     def eventsArray(self):
-        """events as a NumPy structured array (t, iter, id, x, y, z, radius, value, strength, nNew)."""
+        """events as a NumPy structured array (t, iter, id, x, y, z, radius, value, strength, nNew), which prints as
+        a table with its column names (:class:`Records`)."""
         dt = [('t', float), ('iter', np.int64), ('id', np.int64), ('x', float), ('y', float), ('z', float),
               ('radius', float), ('value', float), ('strength', float), ('nNew', np.int64)]
         return np.array([(e['t'], e['iter'], e['id'], *e['pos'], e['radius'], e['value'], e['strength'],
-                          len(e['newIds'])) for e in self.__dict__['_events']], dtype=dt)
+                          len(e['newIds'])) for e in self.__dict__['_events']], dtype=dt).view(Records)
 
     def __str__(self):
         p = ', '.join('%s=%r' % (k, self.__dict__[k]) for k in self._params)

@@ -35,6 +35,10 @@ SEAT_STILL = (0.01, 2e-6)     # ([s], [m]): seated when the sleeper moved less t
 SEAT_TIME = (0.02, 0.2)       # [s] shortest and longest seating (a bed of spheres creeps under a sleeper: docs/box.md)
 
 
+SETTLEMENT_RANGE = 0.25   # [-] of the bed's depth: a settlement beyond it is a punch, not a settlement
+TILT_RANGE = 0.05         # [rad] (3 degrees): a tilt beyond it is an overturn
+
+
 @runtime.persistent('BoxTest')
 class BoxTest(Cyclic, Experiment):
     """A sleeper section on a crushable ballast bed in a box under repeated loads. Keyword arguments: any
@@ -53,6 +57,7 @@ class BoxTest(Cyclic, Experiment):
         self.bedTop = self.porosity = self.bedFile = None
         self.nEscaped, self.nCrib, self.initial, self.gradings, self.frames = 0, 0, None, [], []
         self.onFloor = False   # the sleeper reached the box's floor: the run stops there
+        self.warnings = []     # where the run left the range a box test is for (said once each, in the summary)
         self.target = None     # the cycles done when the load() under way ends
         Experiment.__init__(self, parameters, **params)
 
@@ -159,8 +164,24 @@ class BoxTest(Cyclic, Experiment):
             if breakage.gradedCycle(k):
                 self.grade(k)
             row = dict(zip(Recorder.CYCLE_COLUMNS, self.recorder.cycles[-1]))
+            self.warnOutOfRange(row)
             self.cycleDone(k, row['settlement'], bool(bedChanged(row['crushes'], row['abrasions'])), row['inertialMax'],
                            row['responseRatio'])
+
+    def warnOutOfRange(self, row):
+        """Once each: a settlement beyond SETTLEMENT_RANGE of the bed's depth or a tilt beyond TILT_RANGE, where the
+        sleeper punches into the bed or overturns and a box test no longer measures a sleeper on ballast."""
+        p = self.p
+        checks = (('settlement', row['settlement'] > SETTLEMENT_RANGE * p['bedDepth'],
+                   'settlement %.1f mm is more than %d %% of the bed\'s depth (%.0f mm): the sleeper punches into the '
+                   'bed' % (1e3 * row['settlement'], 100 * SETTLEMENT_RANGE, 1e3 * p['bedDepth'])),
+                  ('tilt', abs(row['tilt']) > TILT_RANGE,
+                   'tilt %.3f rad is beyond %g rad: the sleeper overturns' % (row['tilt'], TILT_RANGE)))
+        for what, out, words in checks:
+            if out and not any(w.startswith(what) for w in self.warnings):
+                self.warnings.append('%s (cycle %d); a box test is for a sleeper seated on its bed' % (
+                    words, row['cycle']))
+                self.say('warning: ' + self.warnings[-1])
 
     def jumped(self, cycles):
         self.recorder.jump(cycles)
@@ -273,7 +294,7 @@ class BoxTest(Cyclic, Experiment):
         return dict(self.baseState(), rig=runtime.ref(self.rig), recorder=runtime.ref(self.recorder),
                     jumper=runtime.ref(self.jumper), stepChoice=runtime.ref(self.stepChoice),
                     bedTop=self.bedTop, porosity=self.porosity, nEscaped=self.nEscaped, nCrib=self.nCrib,
-                    bedFile=self.bedFile, onFloor=self.onFloor, target=self.target,
+                    bedFile=self.bedFile, onFloor=self.onFloor, warnings=self.warnings, target=self.target,
                     initial=self.initial,
                     gradings=self.gradings, frames=self.frames)
 
@@ -288,5 +309,6 @@ class BoxTest(Cyclic, Experiment):
             setattr(exp, k, s[k])
         exp.nCrib = s.get('nCrib', 0)   # states saved before crib ballast existed have none
         exp.onFloor = s.get('onFloor', False)
+        exp.warnings = s.get('warnings', [])   # states of before the warnings have none
         exp.target = s.get('target')   # none in states saved before a killed run could resume
         return exp

@@ -100,6 +100,7 @@ def summary(exp):
         # the steps the cycles took (their median, as cpuSecondsPerCycle), not the period over the last step
         'stepsPerCycle': (float(np.nanmedian(cyc.stepsPerCycle)) if n and cyc.stepsPerCycle.notna().any()
                           else rec.period / O.dt), **cyclic.jumpSummary(cyc, exp.jumper),
+        'warnings': list(exp.warnings),
         **({'stoppedBy': 'sleeperOnFloor'} if exp.onFloor else {}),
         # cut short on the floor: the whole cycles before it; settlement and counts are those at the stop
         **({'cycles': int(rec.partial) - 1, 'stoppedInCycle': int(rec.partial)} if rec.partial else {})}
@@ -143,6 +144,7 @@ def figures(exp, files):
     import matplotlib
     matplotlib.use('Agg')
     import matplotlib.pyplot as plt
+    from matplotlib.ticker import MaxNLocator
     out, p = exp.out, exp.p
     cyc = files['cycles.csv']
     fig, ax = plt.subplots(figsize=(6.4, 4.2))
@@ -167,7 +169,8 @@ def figures(exp, files):
     ax.add_patch(plt.Rectangle((-w / 2, zb), w, p['sleeperHeight'] / 2, color='0.6'))
     if len(c):
         sc = ax.scatter(c.x, c.z, s=8 + 0.4 * (1e3 * c.radius) ** 1.5, c=c.cycle, cmap='viridis', edgecolors='k', lw=0.3)
-        fig.colorbar(sc, ax=ax, label='cycle')
+        bar = fig.colorbar(sc, ax=ax, label='cycle')
+        bar.ax.yaxis.set_major_locator(MaxNLocator(integer=True))   # cycles are whole (not 1.25)
     ax.set_aspect('equal')
     ax.set_xlabel('x along the track [m]')
     ax.set_ylabel('z [m]')
@@ -176,9 +179,14 @@ def figures(exp, files):
     g = files['grading.csv']
     fig, ax = plt.subplots(figsize=(6.0, 4.2))
     for _, row in g.iterrows():
-        ax.semilogx(gr.SIEVES_MM, [row['P%g' % a] for a in gr.SIEVES_MM], '-o', ms=2, label='after %d cycles' % row.cycle)
+        n = int(row.cycle)
+        ax.semilogx(gr.SIEVES_MM, [row['P%g' % a] for a in gr.SIEVES_MM], '-o', ms=2,
+                    label='before loading' if n == 0 else 'after %d cycle%s' % (n, '' if n == 1 else 's'))
     ax.set_xlabel('sieve [mm]')
     ax.set_ylabel('passing [% by mass]')
+    if p['lostAsFines']:   # the volume a replacement or abrasion removes is counted as dust passing every sieve
+        ax.set_title('the lost volume is counted as fines: it passes every sieve, the finest (%g mm) included'
+                     % gr.SIEVES_MM[0], fontsize=8)
     ax.grid(True, which='both', alpha=0.3)
     ax.legend(fontsize=7)
     saveFigure(fig, os.path.join(out, 'grading.png'))
