@@ -73,8 +73,11 @@ def test_a_short_run_writes_every_output(run):
     for name in ('cycles.csv', 'samples.csv', 'grading.csv', 'crushes.csv', 'zones.csv', 'summary.json',
                  'settlement.png', 'breakage.png', 'grading.png', 'state-start.yade.gz', 'state-end.yade.gz'):
         assert os.path.isfile(os.path.join(test.out, name)), name
-    assert s['warnings'] == []   # a sleeper seated on its bed: within the range of a box test
     cyc = pd.read_csv(os.path.join(test.out, 'cycles.csv'))
+    # a warning, once, exactly where cycles.csv leaves the range of a box test (this weak bed: 29 mm in 100 mm)
+    said = [w.split()[0] for w in s['warnings']]
+    assert said.count('settlement') == int(bool((cyc.settlement > 0.25 * SMALL['bedDepth']).any()))
+    assert said.count('tilt') == int(bool((cyc.tilt.abs() > 0.05).any())) and len(said) <= 2
     assert list(cyc.cycle) == [1, 2, 3] and s['cycles'] == 3
     assert np.allclose(cyc.t, [0.025, 0.05, 0.075], atol=0.025 / SMALL.get('samples', 100) + 1e-4)
     assert s['settlement'] == pytest.approx(cyc.settlement.iloc[-1], rel=1e-8)
