@@ -133,22 +133,27 @@ def saveFigure(fig, path, dpi=120):
     writeAtomic(path, buf.getvalue())
 
 
-def plainLogTicks(ax):
-    """A log x axis labelled in plain numbers: 1, 2, 3, 5, 10, 20, ... over at most 2.5 decades (matplotlib's default
-    gives 2x10^0, 3x10^0 there), the decades only (1, 10, 100, ...) over more; the other ticks unlabelled."""
+def plainLogTicks(ax, axes='x'):
+    """A log axis (`axes`: 'x', 'y' or 'xy') labelled in plain numbers: 1, 2, 3, 5, 10, 20, ... over at most 2.5
+    decades (matplotlib's default gives 2x10^0, 3x10^0 there, or labels only a few minor ticks within a decade), the
+    decades only (1, 10, 100, ...) over more; the other ticks unlabelled."""
     import math
     from matplotlib.ticker import FuncFormatter
 
-    def label(v, _):
-        if not v > 0:
-            return ''
-        lo, hi = ax.get_xlim()
-        if abs(math.log10(v) - round(math.log10(v))) < 1e-9:
-            return '%g' % v
-        few = lo > 0 and math.log10(hi / lo) <= 2.5
-        return '%g' % v if few and ('%.0e' % v)[0] in '235' else ''
-    ax.xaxis.set_major_formatter(FuncFormatter(label))
-    ax.xaxis.set_minor_formatter(FuncFormatter(label))
+    def formatter(limits):
+        def label(v, _):
+            if not v > 0:
+                return ''
+            lo, hi = limits()
+            if abs(math.log10(v) - round(math.log10(v))) < 1e-9:
+                return '%g' % v
+            few = lo > 0 and math.log10(hi / lo) <= 2.5
+            return '%g' % v if few and ('%.0e' % v)[0] in '235' else ''
+        return FuncFormatter(label)
+    for name in axes:
+        axis, limits = (ax.xaxis, ax.get_xlim) if name == 'x' else (ax.yaxis, ax.get_ylim)
+        axis.set_major_formatter(formatter(limits))
+        axis.set_minor_formatter(formatter(limits))
 
 
 def runStatus(runDir):

@@ -73,3 +73,28 @@ def test_a_killed_run_state_is_the_last_state_of_a_run_still_marked_running(tmp_
     assert files.killedRunState(d) == os.path.join(d, 'state-cycle0000050.yade.gz')
     (tmp_path / 'run.json').write_text('{"status": "finished", "lastState": "state-cycle0000050.yade.gz"}')
     assert files.killedRunState(d) is None
+
+
+def test_log_axes_are_labelled_in_plain_numbers_on_both_axes():
+    """plainLogTicks(ax, 'xy'): within 2.5 decades the ticks 1, 2, 3, 5 of each decade and the decades are labelled
+    in plain numbers (not 2x10^0), the others left blank; over more, the decades only."""
+    import matplotlib
+    matplotlib.use('Agg')
+    import matplotlib.pyplot as plt
+    from ballast.runfiles import plainLogTicks
+    fig, ax = plt.subplots()
+    ax.loglog([20, 50], [30, 100])
+    ax.set_xlim(20, 50)
+    ax.set_ylim(30, 100)
+    plainLogTicks(ax, 'xy')
+    fig.canvas.draw()
+
+    def shown(axis):
+        lo, hi = axis.get_view_interval()
+        ticks = [t for t in axis.get_major_ticks() + axis.get_minor_ticks() if lo * (1 - 1e-9) <= t.get_loc() <= hi * (1 + 1e-9)]
+        return sorted({float(t.label1.get_text()) for t in ticks if t.label1.get_text()})
+    assert shown(ax.yaxis) == [30.0, 50.0, 100.0] and shown(ax.xaxis) == [20.0, 30.0, 50.0]
+    ax.set_ylim(1, 1e4)   # four decades: the decades only
+    fig.canvas.draw()
+    assert shown(ax.yaxis) == [1.0, 10.0, 100.0, 1000.0, 10000.0]
+    plt.close(fig)

@@ -10,7 +10,7 @@ import time
 import numpy as np
 import pandas as pd
 
-from ...runfiles import saveFigure, strictJson, writeAtomic
+from ...runfiles import plainLogTicks, saveFigure, strictJson, writeAtomic
 from . import strengths
 
 STRENGTH_COLUMNS = ['grain', 'diameter', 'sizeClass', 'crushed', 'force', 'forceBottom', 'displacement',
@@ -83,7 +83,7 @@ def figures(exp, s, summary):
     matplotlib.use('Agg')
     import matplotlib.pyplot as plt
     c = s[s.crushed]
-    fig, ax = plt.subplots(figsize=(7, 5))
+    fig, ax = plt.subplots(figsize=(9.5, 5))
     for cl in summary['classes']:
         g = c[c.sizeClass == cl['class']]
         if len(g) == 0:
@@ -99,10 +99,10 @@ def figures(exp, s, summary):
                                                                           w['modulusHigh'], w['scale'] / 1e6))
     ax.set_xlabel('ln($F/d^2$ [MPa])')
     ax.set_ylabel('ln ln(1/$P_s$)')
-    ax.set_title('single-particle crushing %s: %d grains, %s, $f_{t0}$ = %g Pa m, m = %g, Weibull modulus %g' % (
+    ax.set_title('single-particle crushing %s: %d grains, %s,\n$f_{t0}$ = %g Pa m, m = %g, Weibull modulus %g' % (
         exp.runId, len(s), exp.p['criterion'], exp.p['ft0'], exp.p['m'], exp.p['weibullModulus']), fontsize=8)
     ax.grid(alpha=0.3)
-    ax.legend(fontsize=7)
+    ax.legend(fontsize=7, loc='upper left', bbox_to_anchor=(1.02, 1.0), borderaxespad=0)   # beside, not on the points
     fig.tight_layout()
     saveFigure(fig, os.path.join(exp.out, 'weibull.png'))
     fig, ax = plt.subplots(figsize=(6, 4.5))
@@ -121,6 +121,7 @@ def figures(exp, s, summary):
                   label='$\\sigma_0 \\propto d^{-b}$, b = %.2f [%.2f, %.2f]' % (law['b'], law['bLow'], law['bHigh']))
     ax.set_xlabel('diameter d [mm]')
     ax.set_ylabel('$F/d^2$ at the crush [MPa]')
+    plainLogTicks(ax, 'xy')   # within a decade matplotlib labels only a few minor ticks (30, 40, 80-100 MPa)
     ax.grid(alpha=0.3, which='both')
     ax.legend(fontsize=8)
     fig.tight_layout()
