@@ -50,3 +50,17 @@ def test_size_law_without_scatter_is_the_closed_form():
 def test_classes_of_equal_width():
     cls, edges = strengths.classes([0.0205, 0.028, 0.0285, 0.0445], 0.0205, 0.0445, 3)
     assert edges.tolist() == pytest.approx([0.0205, 0.0285, 0.0365, 0.0445]) and cls.tolist() == [0, 0, 1, 2]
+
+
+def test_a_modulus_of_rounding_is_no_scatter():
+    """Strengths on one law up to a relative noise of 1e-6 (a deterministic test's rounding) fit a modulus in the
+    thousands: above NO_SCATTER it is reported as infinite, in a class fit and in the size law."""
+    rng = np.random.default_rng(5)
+    r = rng.uniform(0.01, 0.022, 40)
+    sigma = 3.1e6 / r * (1 + 1e-6 * rng.standard_normal(40))
+    w = strengths.weibullFit(1e8 * (1 + 1e-6 * rng.standard_normal(10)))   # one size, rounding only
+    assert math.isinf(w['modulus']) and math.isinf(w['modulusLow'])
+    law = strengths.sizeLawFit(r, sigma)
+    assert math.isinf(law['k']) and law['b'] == pytest.approx(1.0, abs=1e-4)
+    # real scatter stays finite
+    assert strengths.weibullFit(rng.weibull(5.0, 200) * 1e8)['modulus'] < strengths.NO_SCATTER

@@ -14,15 +14,11 @@ from ...engineparams import CRUSH
 from ...params import ParamError, validate
 from .closedform import STRESS_PER_F_OVER_D2, criterionStress
 from .parameters import DIAMETERS  # the sizes of ballast grains and their fragments [m]
-from .strengths import sizeLawFit
+from .strengths import NO_SCATTER, sizeLawFit
 
 # accepted columns and their factor to SI units
 DIAMETER_COLUMNS = {'diameter': 1.0, 'diameter_m': 1.0, 'diameter_mm': 1e-3}
 FORCE_COLUMNS = {'force': 1.0, 'force_N': 1.0, 'force_kN': 1e3}
-
-
-# the crushing engine's largest Weibull modulus (params.CRUSH): a fit above it is taken as no scatter
-KMAX_SCATTER = 50.0
 
 
 class CalibrationError(ValueError):
@@ -135,7 +131,7 @@ def calibrate(d, force, criterion, rRef=None):
     rRef = float(np.exp(np.mean(np.log(r)))) if rRef is None else float(rRef)
     atRef = sizeLawFit(r / rRef, sigma)  # the same law with r in units of rRef: its s0 is the strength at rRef
     k = fit['k']
-    if k > KMAX_SCATTER:  # less scatter than the engine's largest Weibull modulus represents: none
+    if k > NO_SCATTER:  # less scatter than the engine's largest Weibull modulus represents: none
         k = math.inf
     out = {'criterion': criterion, 'n': fit['n'], 'ft0': fit['s0'], 'ft0Low': fit['s0Low'], 'ft0High': fit['s0High'],
            'm': fit['b'], 'mLow': fit['bLow'], 'mHigh': fit['bHigh'],

@@ -16,6 +16,9 @@ import numpy as np
 from scipy import optimize, stats
 
 Z95 = stats.norm.ppf(0.975)
+# A fitted Weibull modulus above this is no scatter: the crushing engine's largest (params.CRUSH weibullModulus), where
+# a fit of deterministic strengths lands on numerical noise (k of 2 000-13 000 with intervals of no width)
+NO_SCATTER = 50.0
 # asymptotic variances of the Weibull maximum-likelihood estimates, per grain (Fisher information)
 VAR_K, VAR_LOG_SCALE = 6 / math.pi ** 2, 1 + 6 * (1 - np.euler_gamma) ** 2 / math.pi ** 2
 
@@ -36,6 +39,9 @@ def weibullFit(sigma):
         return {'n': len(s), 'modulus': math.inf, 'modulusLow': math.inf, 'modulusHigh': math.inf,
                 'scale': float(s[0]), 'scaleLow': float(s[0]), 'scaleHigh': float(s[0])}
     k, _, scale = stats.weibull_min.fit(s, floc=0)
+    if k > NO_SCATTER:   # the scatter of rounding, not of strength
+        return {'n': len(s), 'modulus': math.inf, 'modulusLow': math.inf, 'modulusHigh': math.inf,
+                'scale': float(scale), 'scaleLow': float(np.min(s)), 'scaleHigh': float(np.max(s))}
     dk = Z95 * k * math.sqrt(VAR_K / len(s))
     dl = Z95 * math.sqrt(VAR_LOG_SCALE / len(s)) / k
     return {'n': len(s), 'modulus': float(k), 'modulusLow': float(k - dk), 'modulusHigh': float(k + dk),
@@ -92,6 +98,10 @@ def sizeLawFit(r, sigma):
         cov = np.linalg.inv(_hessian(nll, res.x))
     se = np.sqrt(np.maximum(np.diag(cov), 0))
     logS0, b, logK = res.x
+    if math.exp(logK) > NO_SCATTER:   # on one power law up to rounding: no scatter, as the closed form above
+        return {'n': len(r), 's0': math.exp(logS0), 's0Low': math.exp(logS0 - Z95 * se[0]),
+                's0High': math.exp(logS0 + Z95 * se[0]), 'b': float(b), 'bLow': float(b - Z95 * se[1]),
+                'bHigh': float(b + Z95 * se[1]), 'k': math.inf, 'kLow': math.inf, 'kHigh': math.inf}
     return {'n': len(r), 's0': math.exp(logS0), 's0Low': math.exp(logS0 - Z95 * se[0]),
             's0High': math.exp(logS0 + Z95 * se[0]), 'b': float(b), 'bLow': float(b - Z95 * se[1]),
             'bHigh': float(b + Z95 * se[1]), 'k': math.exp(logK), 'kLow': math.exp(logK - Z95 * se[2]),
