@@ -119,6 +119,8 @@ def test_growth_at_most_doubles_the_count_and_the_crush_stays_in_cycle_61(monkey
     cycle, j = crushCycle(monkeypatch, CycleJumper(window=2, steady=0.2, maxDamage=0.99, margin=0, growth=1.0))
     assert cycle == CRUSH_CYCLE and len(j.jumps) >= 2
     assert all(e['to'] <= 2 * e['cycle'] for e in j.jumps) and j.jumps[0]['limit'] == 'growth'
+    # no grain bounded a jump the growth bounded: its grain is empty (it was -1, a body id that is none)
+    assert all((e['grain'] is None) == (e['limit'] in ('growth', 'remaining')) for e in j.jumps)
 
 
 def test_no_jump_before_jump_after(monkeypatch):

@@ -108,7 +108,8 @@ class CycleJumper:
         if cycles < 1:
             return None
         self.pending = {'cycle': int(cycle), 'cycles': int(cycles), 'limit': limit,
-                        'grain': int(ids[grain]) if grain >= 0 else -1, 'maxRate': float(maxRate),
+                        # no grain bounds a jump by the cycles remaining or the growth: grain empty in jumps.csv
+                        'grain': int(ids[grain]) if grain >= 0 else None, 'maxRate': float(maxRate),
                         'rate': rate, 'peakRate': np.mean(inc[:, 1], axis=0), 'grainPeak': float(peak),
                         'grainDrift': float(drift)}
         return self.pending
