@@ -81,7 +81,8 @@ def run(tmp_path_factory):
 
 
 def test_reading_a_run_with_pandas(run, capsys):
-    fd, events, grains, summary = example('read_run_with_pandas').main(run)
+    frames, summary = example('read_run_with_pandas').main(run)
+    fd, events, grains = frames['fd'], frames['events'], frames['grains']
     out = capsys.readouterr().out
     kinds = events['kind'].value_counts().to_dict()
     assert kinds.get('crush', 0) == summary['nCrushed'] > 0 and kinds.get('abrasion', 0) == summary['nAbraded'] > 0
@@ -89,6 +90,26 @@ def test_reading_a_run_with_pandas(run, capsys):
     assert grains['mass'].sum() == pytest.approx(summary['massFinal'], rel=1e-6)
     assert set(grains['generation']) <= set(range(10)) and grains.index.is_unique
     assert 'events by kind' in out and 'grains by generation' in out and 'mass lost' in out
+
+
+def test_reading_runs_of_every_experiment_with_pandas(tmp_path, capsys):
+    """The same example on a box record, a triaxial record and a single-particle run (each names its experiment in
+    summary.json): every CSV as a DataFrame, counts as the summary says; a folder that is not a run, one line."""
+    read = example('read_run_with_pandas')
+    frames, summary = read.main(os.path.join(ROOT, 'docs', 'studies', 'box', 'runs', 'box-seed1-c100'))
+    assert summary['experiment'] == 'box' and len(frames['cycles']) == summary['cycles'] == 100
+    assert frames['cycles'].settlement.iloc[-1] == pytest.approx(summary['settlement'], rel=1e-8)
+    frames, summary = read.main(os.path.join(ROOT, 'docs', 'studies', 'triax-calib-a', 'runs', 'a-rf30'))
+    assert summary['experiment'] == 'triaxial' and frames['cycles'].axialStrain.iloc[-1] == pytest.approx(
+        summary['axialStrain'], rel=1e-8)
+    yade([os.path.join(ROOT, 'scripts', 'single_particle.py'), '--n', 4, '--results', tmp_path, '--runId', 's'],
+         tmp_path)
+    frames, summary = read.main(str(tmp_path / 's'))
+    assert summary['experiment'] == 'single_particle' and len(frames['strengths']) == summary['n'] == 4
+    assert 'single_particle run s' in capsys.readouterr().out
+    p = subprocess.run(['/usr/bin/python3', os.path.join(EXAMPLES, 'read_run_with_pandas.py'), str(tmp_path)],
+                       capture_output=True, text=True, env=dict(os.environ, PYTHONPATH=os.pathsep.join(sys.path)))
+    assert p.returncode == 1 and p.stderr.strip().count('\n') == 0 and 'no summary.json' in p.stderr
 
 
 STANDIN = '''

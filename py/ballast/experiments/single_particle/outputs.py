@@ -46,7 +46,8 @@ def summary(exp, s=None):
         classes.append({'class': k, 'dLow': float(edges[k]), 'dHigh': float(edges[k + 1]), 'n': int(len(g)),
                         'dMean': float(g.diameter.mean()) if len(g) else None,
                         'weibull': strengths.weibullFit(g.forceOverD2) if len(g) else None})
-    out = {'n': int(len(s)), 'nCrushed': int(len(c)), 'nNotCrushed': int(len(s) - len(c)),
+    out = {'experiment': exp.NAME, 'runId': exp.runId,   # as every experiment's summary names itself
+           'n': int(len(s)), 'nCrushed': int(len(c)), 'nNotCrushed': int(len(s) - len(c)),
            'criterion': p['criterion'],
            'forceOverD2Min': float(c.forceOverD2.min()) if len(c) else None,
            'forceOverD2Max': float(c.forceOverD2.max()) if len(c) else None,
