@@ -5,6 +5,7 @@ gradings are where they should be; a saved state reopens and goes on (the comman
 import json
 import os
 import shutil
+import socket
 import subprocess
 
 import numpy as np
@@ -259,6 +260,12 @@ def test_resume_refuses_a_live_run_and_other_physics_and_starts_afresh_without_a
             json.dump(dict(doc, pid=live.pid), fh)
         with pytest.raises(ParamError, match=r"resume = 1 is not allowed: the run in .* is alive \(pid %d\)" % live.pid):
             BoxTest(results=str(tmp_path), runId=test.runId, resume=True, **SMALL).run()
+        # a live run that has saved no state yet: refused too (it started a second run afresh beside it)
+        young = tmp_path / 'young'
+        young.mkdir()
+        (young / 'run.json').write_text(json.dumps({'status': 'running', 'pid': live.pid, 'host': socket.gethostname()}))
+        with pytest.raises(ParamError, match=r"resume = 1 is not allowed: the run in .*young is alive"):
+            BoxTest(results=str(tmp_path), runId='young', resume=True, **SMALL).run()
     finally:
         live.kill()
         live.wait()

@@ -307,6 +307,10 @@ class Experiment:
         if not p.get('resume'):
             return None
         folder = os.path.join(p['results'], runDirName(p['runId']))
+        doc = runStatus(folder) or {}   # a live run first, whether or not it has saved a state yet
+        if doc.get('status') == 'running' and doc.get('host') == socket.gethostname() and processAlive(doc.get('pid')):
+            raise ParamError('resume', '%s: resume = 1 is not allowed: the run in %s is alive (pid %d); stop it first' % (
+                self.Parameters.OWNER, folder, doc['pid']))
         state, why = resumableState(folder)
         if state is None:
             if why in ('no such folder', 'the run finished') or not any(
@@ -317,10 +321,6 @@ class Experiment:
                 self.Parameters.OWNER, folder, why))
         if why:
             self.say('resume: %s' % why)
-        doc = runStatus(folder)
-        if doc.get('host') == socket.gethostname() and processAlive(doc.get('pid')):
-            raise ParamError('resume', '%s: resume = 1 is not allowed: the run in %s is alive (pid %d); stop it first' % (
-                self.Parameters.OWNER, folder, doc['pid']))
         exp = type(self).reopen(state, **{k: p[k] for k in self.REOPEN_PARAMS})
         self.requireSamePhysics(exp, 'resume (the killed run has other values)')
         exp.dir.goOnIn(folder)
