@@ -10,6 +10,7 @@ with a constant force. Hertz-Mindlin contacts; the crushing engine (eqs. 2-4) an
   leaves out, so its grains fall through such boxes;
 * append materials to O.materials; the engines go after NewtonIntegrator.
 """
+import argparse
 import sys
 
 from yade import O, utils
@@ -20,7 +21,11 @@ from yade.wrapper import (Bo1_Box_Aabb, Bo1_Sphere_Aabb, Bo1_Wall_Aabb, ForceRes
 from ballast import BallastAbrasionEngine, BallastCrushEngine
 from ballast.scenes import ballastMaterial, steelMaterial
 
-STEPS = int(sys.argv[1]) if len(sys.argv) > 1 else 20000
+ap = argparse.ArgumentParser(prog='yade -n -x examples/box_under_plate.py', description=__doc__.split('\n\n')[0])
+ap.add_argument('steps', nargs='?', type=int, default=20000, help='steps the plate presses (default %(default)s)')
+STEPS = ap.parse_args(sys.argv[1:]).steps
+if STEPS < 1:
+    ap.error('steps = %d; allowed: an integer >= 1' % STEPS)
 N, R, F = 4, 0.01, 400.0            # grains per side, radius [m], force on the plate [N]
 
 grains, steel = ballastMaterial(E=1e8), steelMaterial(E=1e9)   # soft grains: a large time step

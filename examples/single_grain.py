@@ -5,13 +5,18 @@
 The top wall moves down at constant speed; the crushing engine checks every step and the grain
 breaks into six fragments when its von Mises stress (eqs. 2-3) exceeds f_t = ft0 / r (eq. 4).
 """
+import argparse
 import math
+import sys
 
 from yade import O, utils
 
 from ballast import sizeStrength
 from ballast.engines import BallastCrushEngine
 from ballast.scenes import grainBetweenWalls
+
+argparse.ArgumentParser(prog='yade -n -x examples/single_grain.py', description=__doc__.split('\n\n')[0]).parse_args(
+    sys.argv[1:])   # it takes no argument: one given is refused, not ignored
 
 r, ft0 = 0.02, 2.0e5                      # grain radius [m], reference strength [Pa m]
 g, w0, w1 = grainBetweenWalls(r=r, overlap=0.0, block=False)

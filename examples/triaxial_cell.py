@@ -7,6 +7,7 @@ compressed along y at a constant strain rate with SIGMA3 kept on x and z, while 
 100 steps. The boxes need Bo1_Box_Aabb and Ig2_Box_Sphere_ScGeom; the controller finds them as the
 first six bodies (its default wall ids 0-5). Prints the axial and lateral stresses and the counters.
 """
+import argparse
 import sys
 
 from yade import O, pack, utils
@@ -17,7 +18,11 @@ from yade.wrapper import (Bo1_Box_Aabb, Bo1_Sphere_Aabb, ForceResetter, Ig2_Box_
 from ballast import BallastAbrasionEngine, BallastCrushEngine
 from ballast.scenes import ballastMaterial, steelMaterial
 
-STEPS = int(sys.argv[1]) if len(sys.argv) > 1 else 10000   # steps of the axial compression
+ap = argparse.ArgumentParser(prog='yade -n -x examples/triaxial_cell.py', description=__doc__.split('\n\n')[0])
+ap.add_argument('steps', nargs='?', type=int, default=10000, help='steps of the axial compression (default %(default)s)')
+STEPS = ap.parse_args(sys.argv[1:]).steps
+if STEPS < 1:
+    ap.error('steps = %d; allowed: an integer >= 1' % STEPS)
 SIGMA3, RATE = 1e5, -0.5           # confining stress [Pa], axial strain rate [1/s] (compression)
 
 grains, steel = ballastMaterial(E=1e8, friction=0.5), steelMaterial(E=1e9)

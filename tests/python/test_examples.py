@@ -6,6 +6,7 @@ import importlib.util
 import json
 import os
 import re
+import shutil
 import subprocess
 import sys
 import textwrap
@@ -207,3 +208,13 @@ def test_colouring_by_state_for_paraview(run, paraview, tmp_path, array):
 def test_colouring_by_an_unknown_state_names_the_choices(run, paraview):
     with pytest.raises(SystemExit, match="ARRAY: expected one of generation, nAbraded, stressRatio, damage, got 'colour'"):
         example('paraview_colour_by_state').main(run, 'colour')
+
+
+@pytest.mark.parametrize('name,arg,words', [('triaxial_cell', 'abc', "invalid int value: 'abc'"),
+                                            ('box_under_plate', '-5', 'steps = -5; allowed: an integer >= 1'),
+                                            ('single_grain', '7', 'unrecognized arguments: 7')])
+def test_an_examples_bad_argument_is_refused_before_work(name, arg, words, tmp_path):
+    p = subprocess.run([shutil.which('yade'), '-n', '-x', os.path.join(EXAMPLES, name + '.py'), arg], cwd=tmp_path,
+                       capture_output=True, text=True, timeout=120, env=dict(os.environ, OMP_NUM_THREADS='1'))
+    errors = [ln for ln in p.stderr.splitlines() if 'error:' in ln]
+    assert p.returncode == 2 and len(errors) == 1 and words in errors[0], p.stderr[-1000:]
