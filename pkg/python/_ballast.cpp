@@ -21,6 +21,7 @@ namespace binding {
 	void registerDensityScaling();
 	void registerInertialNumber();
 	void registerMembrane();
+	void registerClumpStress();
 }  // namespace binding
 }  // namespace ballast
 
@@ -46,4 +47,5 @@ BOOST_PYTHON_MODULE(_ballast)
 	registerDensityScaling();
 	registerInertialNumber();
 	registerMembrane();
+	registerClumpStress();
 }

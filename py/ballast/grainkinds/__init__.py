@@ -1,7 +1,7 @@
 """Grain kinds: what a grain is, asked by every piece of the package that reads or changes grains
-(issue 44, item 3). One kind now, :mod:`.sphere` (a grain is one YADE ``Sphere``, the paper's); a kind
-whose grain is a YADE clump of overlapping spheres is one more module here, registered with
-:func:`register`.
+(issue 44, item 3). Two kinds: :mod:`.sphere` (a grain is one YADE ``Sphere``, the paper's) and
+:mod:`.clump` (a grain is a YADE clump of overlapping spheres shaped like ballast, issue 47); each is a
+module here, registered with :func:`register`.
 
 The interface (:class:`GrainKind`) answers, for the grains of the current scene:
 
@@ -195,6 +195,7 @@ def use(name):
 
 
 from . import sphere  # noqa: E402  (the kinds register themselves; they need the interface above)
+from . import clump  # noqa: E402
 
-__all__ = ['DEFAULT', 'GrainKind', 'Replaced', 'Resized', 'SceneKind', 'current', 'kind', 'names', 'register',
-           'sphere', 'use']
+__all__ = ['DEFAULT', 'GrainKind', 'Replaced', 'Resized', 'SceneKind', 'clump', 'current', 'kind', 'names',
+           'register', 'sphere', 'use']

@@ -1,0 +1,56 @@
+"""ballast.grainkinds.clumpshapes: the descriptors held by the member cloud, the union volume against the
+closed form of two overlapping spheres, r_eq of the union against an independent estimate, determinism,
+and the input checks. No YADE."""
+import math
+
+import numpy as np
+import pytest
+
+from ballast.grainkinds.clumpshapes import clumpMembers, principalExtents, unionVolume
+
+
+def test_union_volume_of_two_spheres_against_the_lens_formula():
+    # two spheres of radius r at distance d: V = 2 (4/3 pi r^3) - pi (4 r + d) (2 r - d)^2 / 12
+    r, d = 1.0, 1.2
+    exact = 2 * 4 / 3 * math.pi * r ** 3 - math.pi * (4 * r + d) * (2 * r - d) ** 2 / 12
+    V, err = unionVolume([[0, 0, 0], [d, 0, 0]], [r, r], samples=400000, seed=3)
+    assert err < 2e-3 * exact                    # the stated error: ~0.1 % at 400 000 samples
+    assert abs(V - exact) < 4 * err              # within 4 standard errors
+
+
+@pytest.mark.parametrize('e, f, n', [(0.7, 0.6, 8), (0.5, 0.8, 5), (1.0, 1.0, 12), (0.9, 0.45, 20)])
+def test_descriptors_held_by_the_member_cloud(e, f, n):
+    c, r, V, err = clumpMembers(0.02, elongation=e, flatness=f, n=n, seed=7)
+    assert c.shape == (n, 3) and r.shape == (n,)
+    L, I, S = principalExtents(c, r)
+    assert I / L == pytest.approx(e, rel=1e-12)  # exact by construction (tips and core of radius S)
+    assert S / I == pytest.approx(f, rel=1e-12)
+
+
+def test_equivalent_radius_of_the_union_within_its_stated_error():
+    rEq = 0.025
+    c, r, V, err = clumpMembers(rEq, seed=11)
+    assert V == pytest.approx(4 / 3 * math.pi * rEq ** 3, rel=1e-12)
+    # an independent estimate (another seed, more samples) agrees within 4 combined standard errors
+    V2, err2 = unionVolume(c, r, samples=800000, seed=12345)
+    assert abs(V2 - V) < 4 * math.hypot(err, err2)
+    assert err / V < 2e-3
+    assert (3 * V2 / (4 * math.pi)) ** (1 / 3) == pytest.approx(rEq, rel=2e-3)
+
+
+def test_deterministic_for_a_seed_and_different_across_seeds():
+    a, b, c = (clumpMembers(0.02, seed=s, samples=20000) for s in (1, 1, 2))
+    np.testing.assert_array_equal(a[0], b[0])
+    np.testing.assert_array_equal(a[1], b[1])
+    assert not np.array_equal(a[0], c[0])
+
+
+@pytest.mark.parametrize('kw, name', [({'rEq': -1.0}, 'rEq'), ({'elongation': 0.0}, 'elongation'),
+                                      ({'flatness': 1.5}, 'flatness'), ({'n': 4}, 'n'), ({'n': 6.0}, 'n'),
+                                      ({'elongation': 0.5, 'flatness': 0.5}, 'elongation, flatness')])
+def test_bad_inputs_are_named(kw, name):
+    args = dict(rEq=0.02)
+    args.update(kw)
+    with pytest.raises(ValueError) as e:
+        clumpMembers(**args)
+    assert str(e.value).startswith(name + ':')
