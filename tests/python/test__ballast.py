@@ -29,6 +29,7 @@ BY_FILE = {
     'DensityScaling': {'pWaveStep', 'densityScaling'},
     'InertialNumber': {'inertialNumber'},
     'Membrane': {'membraneLoad'},
+    'ClumpStress': {'clumpStresses'},
 }
 
 

@@ -360,6 +360,34 @@ def membraneLoad(g):
     return kw, check
 
 
+def clumpStresses(g):
+    # m members of k clumps: sigma_k V_k = sum over its members of sigma_m V_m + F_m (x) (x_m - X_k)
+    k, m = int(g.rng.integers(1, 4)), int(g.rng.integers(0, 7))
+    idx = g.rng.integers(0, k, m)
+    kw = dict(memberStresses=g.array(g.signed((m, 3, 3))), memberVolumes=g.array(g.magnitude(m)),
+              memberForces=g.array(g.signed((m, 3))), memberPositions=g.array(g.signed((m, 3))),
+              clumpIndex=g.array(idx, integers=True), clumpCentres=g.array(g.signed((k, 3))),
+              clumpVolumes=g.array(g.magnitude(k)))
+
+    def check(out):
+        x = {n: asFloat(v) for n, v in kw.items() if n != 'clumpIndex'}
+        ci = np.asarray(kw['clumpIndex'])
+        shapes = {'memberStresses': (m, 3, 3), 'memberVolumes': (m,), 'memberForces': (m, 3),
+                  'memberPositions': (m, 3), 'clumpCentres': (k, 3), 'clumpVolumes': (k,)}
+        if any(x[n].shape != sh for n, sh in shapes.items()) or ci.shape != (m,) or not moderate(*x.values()):
+            return False
+        terms = x['memberStresses'] * x['memberVolumes'][:, None, None] + np.einsum(
+            'mi,mj->mij', x['memberForces'], x['memberPositions'] - x['clumpCentres'][idx])
+        want, scale = np.zeros((k, 3, 3)), np.zeros(k)
+        for j in range(m):
+            want[idx[j]] += terms[j]
+            scale[idx[j]] += np.max(np.abs(terms[j]))
+        want /= x['clumpVolumes'][:, None, None]
+        close(out, want, atol=1e-12 * (scale / x['clumpVolumes'])[:, None, None], rtol=1e-11)
+        return True
+    return kw, check
+
+
 def majorPrincipalRef(S):
     """The largest principal compressive stress of eq. 3 (compression negative): -lambda_min, 0 if none."""
     return np.maximum(0.0, -np.linalg.eigvalsh(symmetricPart(S))[..., 0])
@@ -688,7 +716,7 @@ FUNCTIONS = {'fabricStress': fabricStress, 'grainStresses': grainStresses, 'vonM
              'keptVolumeFraction': keptVolumeFraction, 'patternName': patternName, 'randomRotation': randomRotation,
              'placeFragments': placeFragments, 'matricesToArray': matricesToArray, '_fastMatrixPath': fastMatrixPath,
              'pWaveStep': pWaveStep, 'densityScaling': densityScaling, 'inertialNumber': inertialNumber,
-             'membraneLoad': membraneLoad,
+             'membraneLoad': membraneLoad, 'clumpStresses': clumpStresses,
              'cycleJumpPlan': cycleJumpPlan}
 
 
