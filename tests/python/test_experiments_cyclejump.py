@@ -77,6 +77,24 @@ def test_the_settlement_of_a_jump_comes_from_the_log_law_of_the_simulated_cycles
     np.testing.assert_array_equal(settlementJumped(N, later)[:-1], got[:-1])
 
 
+def test_jumps_csv_and_cycles_csv_extrapolate_the_same_settlement(monkeypatch):
+    """Many small jumps (maxDamage 0.02) on a bed settling 1e-4 (1 + ln n) exactly: at jump k's end, the count
+    to_k, n_k = to_k - (cycles jumped so far) cycles simulated, settlementJumpedTotal is cycles.csv's definition
+    1e-4 ln(to_k / n_k); each settlementJumped is the total's growth since the jump before, so the column sums to
+    the last total (before 2026-12-05 each jump's 1e-4 ln(to_k / cycle_k) summed to more than that)."""
+    _, j = crushCycle(monkeypatch, CycleJumper(window=2, steady=0.2, maxDamage=0.02, margin=0, growth=1000.0))
+    assert len(j.jumps) > 5
+    to = np.array([e['to'] for e in j.jumps], float)
+    n = to - np.cumsum([e['cycles'] for e in j.jumps])
+    total = np.array([e['settlementJumpedTotal'] for e in j.jumps])
+    law = np.array([e['settlementLawB'] is not None for e in j.jumps])   # none below 3 simulated cycles: 0
+    assert law[-1] and not law[0]
+    np.testing.assert_allclose(total, np.where(law, 1e-4 * np.log(to / n), 0), rtol=1e-9, atol=1e-18)
+    np.testing.assert_allclose(np.cumsum([e['settlementJumped'] for e in j.jumps]), total, rtol=1e-12, atol=1e-18)
+    old = sum(1e-4 * math.log(e['to'] / e['cycle']) for e in j.jumps if e['settlementLawB'] is not None)
+    assert old > 1.05 * total[-1]    # the old per-jump sum counted the cycles jumped before again
+
+
 def jumperOnGrain(monkeypatch, **kw):
     """The fatigue grain and a jumper for a run of 100 cycles: (grain, engine, jumper)."""
     g, crush = fatigueGrain(monkeypatch)

@@ -5,7 +5,9 @@ of DN cycles every grain's damage is advanced by DN rates at once. Crushes are n
 ends before the cycle the first grain would fail in. The grains do not move during a jump: the bed has seen
 n simulated cycles when the count says N, so the settlement of the jumped cycles is b ln(N / n), with b of
 the law s = a + b ln n fitted to the simulated cycles without the steps of those with a crush or an abrasion
-(ballast.settlementlaws.settlementJumped), reported apart.
+(ballast.settlementlaws.settlementJumped), reported apart: in cycles.csv at each simulated cycle, in jumps.csv
+at each jump's end (settlementJumpedTotal, the same definition; settlementJumped is what the jump adds to the
+total of the jump before, so a jump's share can be negative where the law's b fell).
 
 The experiment owns the cycle count and the states: it calls :meth:`CycleJumper.cycleEnded` at each simulated
 cycle's end, and when that returns a plan, :meth:`CycleJumper.apply` at the start of the next step (where a
@@ -18,8 +20,8 @@ from ..settlementlaws import settlementLaw
 from ..runfiles import writeAtomic
 
 LOG_COLUMNS = ('jump', 'cycle', 'cycles', 'to', 'limit', 'grain', 'maxRate', 'maxDamage', 'settlementLawA',
-               'settlementLawB', 'settlementLawR2', 'settlementJumped', 'stateBefore', 'stateAfter', 'grainPeak',
-               'grainDrift')
+               'settlementLawB', 'settlementLawR2', 'settlementJumped', 'settlementJumpedTotal', 'stateBefore',
+               'stateAfter', 'grainPeak', 'grainDrift')
 
 
 # attribute -> its parameter (ballast.experiments.parameters.CYCLE_JUMP), in the constructor's order
@@ -126,16 +128,29 @@ class CycleJumper:
         N0 = plan['cycle']
         law = settlementLaw([d[1] for d in self.direct], [len(d) > 2 and d[2] for d in self.direct])
         self.jumped += n
-        ds = law['b'] * np.log((N0 + n) / N0) if law else 0.0   # what this jump adds to b ln(N / n)
+        # cycles.csv's definition (settlementlaws.settlementJumped) at the jump's end: b ln(N / n), N the count, n the
+        # cycles simulated, b of the law known now; the jump's own share is what it adds to the previous jump's total
+        total = law['b'] * np.log((N0 + n) / len(self.direct)) if law else 0.0
+        ds = total - self._jumpedTotal()
         entry = {'jump': len(self.jumps) + 1, 'cycle': N0, 'cycles': n, 'to': N0 + n, 'limit': plan['limit'],
                  'grain': plan['grain'], 'maxRate': plan['maxRate'],
                  'maxDamage': float(np.max(engine.fatigueState(ids)[:, 0])) if ids else 0.0,
                  'settlementLawA': law['a'] if law else None, 'settlementLawB': law['b'] if law else None,
                  'settlementLawR2': law['r2'] if law else None, 'settlementJumped': float(ds),
+                 'settlementJumpedTotal': float(total),
                  'stateBefore': before, 'stateAfter': after, 'grainPeak': plan.get('grainPeak'),
                  'grainDrift': plan.get('grainDrift')}
         self.jumps.append(entry)
         return entry
+
+    def _jumpedTotal(self):
+        """The extrapolated settlement [m] at the last jump's end (0 before any): its settlementJumpedTotal, or in
+        states of before that column the sum of the jumps' settlementJumped."""
+        if not self.jumps:
+            return 0.0
+        last = self.jumps[-1]
+        return last['settlementJumpedTotal'] if 'settlementJumpedTotal' in last else sum(
+            e['settlementJumped'] for e in self.jumps)
 
     def writeLog(self, path):
         """jumps.csv: a row per jump (LOG_COLUMNS)."""
