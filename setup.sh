@@ -9,7 +9,7 @@ cd "$(dirname "$(readlink -f "$0")")"
 
 # Everything comes from Debian's packages.
 PACKAGES=(yade libeigen3-dev libboost-python-dev libboost-numpy-dev python3-dev python3-numpy python3-scipy python3-pandas
-          python3-pytest python3-matplotlib python3-distributed python3-vtk9 cmake g++ make libgtest-dev)
+          python3-pytest python3-pytest-xdist python3-matplotlib python3-distributed python3-vtk9 cmake g++ make libgtest-dev)
 
 missing=()
 for p in "${PACKAGES[@]}"; do

@@ -42,6 +42,15 @@ def test_the_outputs_readers_are_installed(tmp_path):
     assert r.returncode == 0, r.stderr
 
 
+def test_the_test_runner_finds_its_workers(tmp_path):
+    """tests/run_all.sh runs pytest with a worker per core (-n auto): the set-up installs pytest-xdist for it."""
+    runner = open(os.path.join(ROOT, 'tests', 'run_all.sh')).read()
+    assert '-n auto' in runner
+    assert 'python3-pytest-xdist' in open(os.path.join(ROOT, 'setup.sh')).read().split('PACKAGES=(')[1].split(')')[0].split()
+    r = run(['/usr/bin/python3', '-m', 'pytest', '--version', '-p', 'xdist'], tmp_path)
+    assert r.returncode == 0, r.stderr
+
+
 @pytest.mark.skipif(os.geteuid() != 0, reason='set-up installs as root')
 def test_second_setup_installs_and_rebuilds_nothing(tmp_path):
     r = run(['bash', os.path.join(ROOT, 'setup.sh')], tmp_path, timeout=600)
