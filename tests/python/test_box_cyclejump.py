@@ -12,6 +12,7 @@ import pytest
 pytest.importorskip('yade')
 from ballast.experiments.box import BoxTest  # noqa: E402
 from ballast.params import ParamError  # noqa: E402
+from ballast.settlementlaws import bedChanged, settlementJumped  # noqa: E402
 from test_box_experiment import SMALL  # noqa: E402
 
 WEAK = dict(SMALL, ft0=8e4, fatigue=True, fatigueExponent=10, cycles=14, progress=600)
@@ -147,6 +148,15 @@ def test_a_run_without_jumping_goes_on_with_it_in_a_slice(tmp_path, beds):
     cyc = pd.read_csv(os.path.join(str(tmp_path), s['runId'], 'cycles.csv'))
     assert s['cycles'] == 15 and s['jumps'] >= 1 and cyc.cycle.iloc[-1] == 15 and cyc.jumped.iloc[-1] > 0
     assert list(cyc.cycle[:3]) == [1, 2, 3]                     # the saved run's cycles, simulated without jumps
+    # each jump extrapolates as cycles.csv does, over every simulated cycle before it, the saved run's included
+    # (n counted them: before 2026-12-05 the slice's jumper had seen only its own)
+    jumps = pd.read_csv(os.path.join(str(tmp_path), s['runId'], 'jumps.csv'))
+    for _, e in jumps.iterrows():
+        rows = cyc[cyc.cycle <= e.cycle]
+        N = np.append(rows.cycle.to_numpy()[:-1], e.to)
+        want = settlementJumped(N, rows.settlement, bedChanged(rows.crushes.to_numpy(), rows.abrasions.to_numpy()))
+        assert e.settlementJumpedTotal == pytest.approx(want[-1], rel=1e-6, abs=1e-12)
+    assert jumps.settlementJumped.sum() == pytest.approx(jumps.settlementJumpedTotal.iloc[-1], rel=1e-9, abs=1e-15)
 
 
 def test_a_killed_run_resumed_after_a_jump_forgets_the_later_jumps_of_the_killed_process(jumped, tmp_path, beds):

@@ -76,6 +76,15 @@ class CycleJumper:
         for attr, name in SETTINGS.items():
             setattr(self, attr, int(p[name]) if attr in INTEGER else p[name])
 
+    def seed(self, cycles, settlements, changed):
+        """Jumping started in a run reopened after simulated cycles (a slice, continueFrom, a resume with jump):
+        those cycles, numbered in the count, with their simulated settlement [m] and whether a grain crushed or
+        abraded in each, become the series the settlement law is fitted to, as if the jumper had seen them; n, the
+        cycles simulated, then counts them (cycles.csv's definition)."""
+        if self.direct:
+            raise RuntimeError('CycleJumper.seed: the jumper has seen %d cycles already' % len(self.direct))
+        self.direct = [[int(c), float(s), bool(x)] for c, s, x in zip(cycles, settlements, changed)]
+
     def tune(self, p):
         """The parameters p (checked) of a run reopened with other jump settings; jump off: no more jumps, the
         cycles jumped stay counted."""

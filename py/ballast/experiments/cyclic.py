@@ -206,6 +206,10 @@ class Cyclic:
         """Cycles done, simulated and jumped (each experiment counts them)."""
         raise NotImplementedError
 
+    def cycleFrame(self):
+        """cycles.csv as it stands, a DataFrame (each experiment's outputs make it)."""
+        raise NotImplementedError
+
     # ------------------------------------------------------------------ cycle jumping (experiments.cyclejump)
     def startJumping(self):
         """With jump: the jumper (self.jumper, a piece) and, first in the chain, the callback that makes a jump at
@@ -221,6 +225,9 @@ class Cyclic:
         if self.jumper is None:
             if self.p['jump']:
                 self.startJumping()
+                if self.cyclesDone():   # the cycles simulated before: the settlement law's first rows
+                    frame = self.cycleFrame()
+                    self.jumper.seed(frame.cycle, frame.settlement, changed(frame))
                 return True
             return False
         self.jumper.tune(self.p)

@@ -157,6 +157,9 @@ class Oedometer(Cyclic, Experiment):
         rows = self.outputs.cycleRows
         return int(rows[-1][0]) if rows else 0
 
+    def cycleFrame(self):
+        return self.outputs.cycleTable()
+
     def cycleEnded(self):
         """After outputs.cycleEnd at each cycle's end: the row just closed, once, to cyclic.Cyclic.cycleDone."""
         rows = self.outputs.cycleRows

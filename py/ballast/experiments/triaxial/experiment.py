@@ -195,6 +195,9 @@ class TriaxialTest(Cyclic, Experiment):
     def cyclesDone(self):
         return len(self.recorder.cycles) + self.recorder.jumped if self.recorder is not None else 0
 
+    def cycleFrame(self):
+        return outputs.cycleTable(self)
+
     def load(self, cycles=None):
         """Run `cycles` more load cycles (default the parameter's), then write every output and save the state.
         Returns the summary."""
