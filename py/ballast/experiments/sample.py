@@ -115,10 +115,12 @@ def press(exp, steel, mass, force):
     return pid
 
 
-def layers(exp, shape, area, depth, ballast, pressLayer):
+def layers(exp, shape, area, depth, ballast, pressLayer, toHeight=None):
     """A bed or specimen of `depth` [m] over `area` [m^2] in exp.p['layers'] layers: each a cloud in `shape` of
     solidFraction of its share of the volume (seed: exp.p['seed'] * 100 + the layer), falling onto the layer below,
-    then pressed at layerPressure by pressLayer(force [N]), which returns the layer's top [m]. Returns the last top."""
+    then pressed at layerPressure by pressLayer(force [N]), which returns the layer's top [m], or with toHeight
+    compacted to its share of the depth by toHeight(z [m]), which returns (the top [m], the pressure then [Pa]).
+    Returns the last top."""
     p, top = exp.p, 0.0
     for k in range(p['layers']):
         pos, rad, cloudTop = cloud(shape, p['dMin'], p['dMax'], p['solidFraction'] * area * depth / p['layers'],
@@ -129,9 +131,54 @@ def layers(exp, shape, area, depth, ballast, pressLayer):
         tFall = math.sqrt(2 * (cloudTop - top) / 9.81)
         exp.phases.say('layer %d of %d: %d grains falling from up to %.3f m' % (k + 1, p['layers'], len(rad), cloudTop))
         deposit(exp, tFall)
-        top = pressLayer(p['layerPressure'] * area)
-        exp.phases.say('layer %d pressed at %.3g kPa: top at %.4f m' % (k + 1, p['layerPressure'] / 1e3, top))
+        if toHeight is None:
+            top = pressLayer(p['layerPressure'] * area)
+            exp.phases.say('layer %d pressed at %.3g kPa: top at %.4f m' % (k + 1, p['layerPressure'] / 1e3, top))
+        else:
+            mark = (k + 1) * depth / p['layers']
+            top, pressure = toHeight(mark)
+            exp.phases.say('layer %d compacted to %.4f m (its mark %.4f m), carrying %.3g kPa there%s' % (
+                k + 1, top, mark, pressure / 1e3, ' (it lay below: denser than solidFraction)' if top < mark else
+                ' (refusal: the mark not reached at layerPressure)' if top > mark + 1e-9 else ''))
     return top
+
+
+def pressLayerTo(exp, steel, mass, zTarget, area, pressure):
+    """A layer compacted to a height, as a laboratory compacts a specimen's layers to marks on the mould
+    (undercompaction, Ladd 1978) with a given effort: the plate of press() pressed down at `pressure` [Pa] (area
+    [m^2]) until it rests or reaches zTarget [m], where it is stopped and held until the grains rest; then taken
+    away. Returns (the plate's height then [m], the pressure the grains carry on it then [Pa]): above zTarget where
+    the effort does not pack the grains so densely (refusal); a layer resting below zTarget (denser than asked) is
+    not touched: (its top, 0)."""
+    x, r, _ = grains.arrays()
+    top = float(np.max(x[:, 2] + r))
+    if top <= zTarget:
+        return top, 0.0
+    plate = utils.wall(top, axis=2, sense=-1, material=steel, mask=STEEL_MASK)
+    plate.state.blockedDOFs = 'xyXYZ'
+    plate.state.mass = mass
+    plate.state.inertia = Vector3(1, 1, 1)  # a wall has none; its rotations are blocked, but Newton divides by it
+    plate.dynamic = True
+    pid = O.bodies.append(plate)
+    O.forces.setPermF(pid, Vector3(0, 0, -pressure * area))
+    t0 = O.time
+    rests = preparation.still(pid, *PRESS_STILL, after=t0 + PRESS_TIME[0], unbalanced=0.01)
+    exp.phases.run('press', lambda: O.bodies[pid].state.pos[2] <= zTarget or rests(), tEnd=t0 + PRESS_TIME[1],
+                   checkEvery=20, extra=lambda: 'plate at %.4f m, its mark %.4f m  %s' % (
+                       O.bodies[pid].state.pos[2], zTarget, grains.restInfo()))
+    b = O.bodies[pid]
+    O.forces.setPermF(pid, Vector3(0, 0, 0))   # a permanent force outlives its body in the force container
+    if b.state.pos[2] <= zTarget:   # at the mark: held there (a fixed plate) while the grains come to rest
+        b.dynamic = False
+        b.state.vel = Vector3(0, 0, 0)
+        b.state.pos = Vector3(b.state.pos[0], b.state.pos[1], zTarget)
+        exp.phases.run('hold', lambda: grains.unbalanced() < 0.02, tEnd=O.time + PRESS_TIME[1], checkEvery=100,
+                       extra=grains.restInfo)
+        z, p = zTarget, abs(float(O.forces.f(pid)[2])) / area
+    else:
+        z, p = float(b.state.pos[2]), pressure
+    O.bodies.erase(pid)
+    return z, p
 
 
 def pressLayer(exp, steel, mass, force):

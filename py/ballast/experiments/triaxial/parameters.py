@@ -9,7 +9,7 @@ import json
 import math
 import os
 
-from ...params import NUMBER_NONNEGATIVE, NUMBER_POSITIVE, Param, anyText, between, boolean, flag, intBetween, \
+from ...params import NUMBER_NONNEGATIVE, NUMBER_POSITIVE, Param, anyText, between, boolean, choice, flag, intBetween, \
     nonNegative, positive, positiveInt, text
 from ..parameters import (CONTACT, CYCLE_JUMP, CYCLE_OUTPUTS, ENGINES, GRAINS, INTEGRATION, PREPARATION, QUASI_STATIC,
                           RUN, SEED, STEEL, ExperimentParameters, take)
@@ -30,8 +30,15 @@ PARAMS = {
     'solidFraction': Param(0.6, '-', 'solid volume of the grains of a layer over the layer\'s share of the mould: '
                            'with layerPressure, what sets the specimen\'s porosity (reported as porosity)',
                            between(0.3, 0.74), 'a number in [0.3, 0.74)'),
-    'layerPressure': Param(1e5, 'Pa', 'pressure on each frictionless layer through a plate until it rests', positive,
-                           NUMBER_POSITIVE),
+    'layerPressure': Param(1e5, 'Pa', 'pressure on each layer through a plate until it rests (with compaction '
+                           '\'height\', or until it reaches the layer\'s mark)', positive, NUMBER_POSITIVE),
+    'compaction': Param('pressure', '-', "how each layer is compacted: 'pressure' (pressed at layerPressure until it "
+                        "rests: the porosity follows from the grains, denser than 1 - solidFraction without friction) "
+                        "or 'height' (pressed so, but stopped and held at its share of the specimen's height, as a "
+                        "laboratory compacts layers to marks on the mould, Ladd 1978: the porosity is 1 - "
+                        "solidFraction where the grains, deposited with depFriction, lie looser than that and "
+                        "layerPressure packs them to it; the porosity reached is reported)", choice('pressure', 'height'),
+                        "'pressure' or 'height'", text),
     'reuseSpecimen': Param(True, '-', 'load the stored specimen of this seed and specimen parameters if there is one',
                            boolean, '0 or 1', flag),
     'specimenDir': Param('', 'path', 'where specimens are stored (default <results>/specimens)', anyText, 'a path',
@@ -103,6 +110,8 @@ SPECIMEN_VERSION = 1
 def specimenKey(p):
     """(the values that decide the specimen, the file name it is stored under)."""
     d = dict({k: p[k] for k in SPECIMEN_KEYS}, version=SPECIMEN_VERSION)
+    if p['compaction'] != 'pressure':   # only then: the specimens stored before the option keep their names
+        d['compaction'] = p['compaction']
     h = hashlib.sha1(json.dumps(d, sort_keys=True).encode()).hexdigest()[:10]
     return d, 'specimen-seed%d-%s.json' % (p['seed'], h)
 

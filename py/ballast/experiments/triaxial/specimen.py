@@ -90,8 +90,11 @@ def buildSpecimen(exp):
     O.engines = engines(p['prepDamping'], p['law'], rolling(p))
     R = p['diameter'] / 2
     area = math.pi * R ** 2
-    top = sample.layers(exp, sample.CylinderShape(R), area, p['height'], ballast, lambda force: sample.pressLayer(
-        exp, steel, p['steelDensity'] * area * PLATE_THICKNESS, force))
+    mass = p['steelDensity'] * area * PLATE_THICKNESS
+    toHeight = (lambda z: sample.pressLayerTo(exp, steel, mass, z, area, p['layerPressure'])) \
+        if p['compaction'] == 'height' else None
+    top = sample.layers(exp, sample.CylinderShape(R), area, p['height'], ballast,
+                        lambda force: sample.pressLayer(exp, steel, mass, force), toHeight)
     # a grain that jumped the mould's rim while the layers fell lies on the base outside: not part of the specimen
     escaped = [b.id for b in grains.spheres() if math.hypot(b.state.pos[0], b.state.pos[1]) > R or b.state.pos[2] < 0]
     for i in escaped:
