@@ -22,6 +22,7 @@ namespace binding {
 	void registerInertialNumber();
 	void registerMembrane();
 	void registerClumpStress();
+	void registerClumpSplit();
 }  // namespace binding
 }  // namespace ballast
 
@@ -48,4 +49,5 @@ BOOST_PYTHON_MODULE(_ballast)
 	registerInertialNumber();
 	registerMembrane();
 	registerClumpStress();
+	registerClumpSplit();
 }

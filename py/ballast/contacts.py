@@ -68,3 +68,19 @@ def resize(bid, rOld, rNew):
             i.phys = None
         n += 1
     return n
+
+
+# stiffness attributes of YADE's IPhys classes the package's laws use: FrictPhys (kn, ks), MindlinPhys (kno, kso and
+# the current kn, ks), CohFrictPhys (kn, ks, kr, ktw)
+_STIFFNESS = ('kn', 'ks', 'kno', 'kso', 'kr', 'ktw')
+
+
+def silence(i):
+    """A contact (a real interaction) that carries no force: every stiffness of its physics set to 0. For two
+    members of a split clump that overlapped inside it (issue 47, item 2): their overlap is the clump's own
+    volume, not a pressed contact; YADE erases the interaction when they part, and a later contact between
+    them is created afresh with its full stiffness. Returns the interaction."""
+    for k in _STIFFNESS:
+        if hasattr(i.phys, k):
+            setattr(i.phys, k, 0.0)
+    return i

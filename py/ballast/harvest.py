@@ -40,7 +40,7 @@ class GrainTable:
             if isinstance(b.shape, Sphere):  # the contact's geometry (Ig2_*_Sphere), whatever the grain kind
                 _material(self.sphereMaterials, b.material)
                 self.radiusById[b.id] = b.shape.radius
-            else:
+            elif not b.isClump:  # a clump body touches nothing: its members do
                 _material(self.otherMaterials, b.material)
             if b.dynamic and kind.isGrain(b):
                 ids.append(b.id)

@@ -30,6 +30,7 @@ BY_FILE = {
     'InertialNumber': {'inertialNumber'},
     'Membrane': {'membraneLoad'},
     'ClumpStress': {'clumpStresses'},
+    'ClumpSplit': {'clumpSplit'},
 }
 
 

@@ -707,6 +707,29 @@ def fastMatrixPath(g):
     return kw, check
 
 
+def clumpSplit(g):
+    # m members about a centre: every member in one piece 0..k-1, each piece held, k >= 2 when m >= 2, unit normals;
+    # pairs: members of different pieces whose spheres overlap (|x_i - x_j| < r_i + r_j)
+    m = int(g.rng.integers(1, 12))
+    kw = dict(stress=g.array(g.signed((3, 3))), centre=g.array(g.signed(3)), memberPositions=g.array(g.signed((m, 3))),
+              memberRadii=g.array(g.magnitude(m)))
+
+    def check(out):
+        x = {n: asFloat(v) for n, v in kw.items()}
+        shapes = {'stress': (3, 3), 'centre': (3,), 'memberPositions': (m, 3), 'memberRadii': (m,)}
+        if any(x[n].shape != sh for n, sh in shapes.items()) or not moderate(*x.values()):
+            return False
+        piece, k = out['piece'], out['nPieces']
+        assert piece.shape == (m,) and sorted(set(piece.tolist())) == list(range(k)) and (k >= 2) == (m >= 2)
+        close(np.linalg.norm(out['normals'], axis=1), np.ones(len(out['normals'])), rtol=1e-12)
+        c, r = x['memberPositions'], x['memberRadii']
+        want = [[i, j] for i in range(m) for j in range(i + 1, m)
+                if piece[i] != piece[j] and np.linalg.norm(c[i] - c[j]) < r[i] + r[j]]
+        assert out['pairs'].tolist() == want
+        return True
+    return kw, check
+
+
 FUNCTIONS = {'fabricStress': fabricStress, 'grainStresses': grainStresses, 'vonMises': vonMises,
              'principalStresses': principalStresses, 'hertzPressure': hertzPressure, 'effectiveRadius': effectiveRadius,
              'sizeStrength': sizeStrength, 'contactModulus': contactModulus, 'hertzPressureFromForce': hertzPressureFromForce,
@@ -716,7 +739,7 @@ FUNCTIONS = {'fabricStress': fabricStress, 'grainStresses': grainStresses, 'vonM
              'keptVolumeFraction': keptVolumeFraction, 'patternName': patternName, 'randomRotation': randomRotation,
              'placeFragments': placeFragments, 'matricesToArray': matricesToArray, '_fastMatrixPath': fastMatrixPath,
              'pWaveStep': pWaveStep, 'densityScaling': densityScaling, 'inertialNumber': inertialNumber,
-             'membraneLoad': membraneLoad, 'clumpStresses': clumpStresses,
+             'membraneLoad': membraneLoad, 'clumpStresses': clumpStresses, 'clumpSplit': clumpSplit,
              'cycleJumpPlan': cycleJumpPlan}
 
 

@@ -80,12 +80,14 @@ def test_save_load_keeps_the_kind_and_the_volumes(tmp_path):
     np.testing.assert_array_equal(k.volumes(ids), V)
 
 
-def test_replace_and_resize_are_not_yet_implemented():
+def test_a_clump_is_split_not_replaced_and_resizing_it_is_not_yet_implemented():
+    steel, ballast = _scene()
+    cid = clump.addClump((0, 0, 0), 0.02, ballast, seed=1)
     k = grainkinds.kind('clump')
-    with pytest.raises(NotImplementedError, match='issue 47, item 2'):
-        k.replace(0, None, True)
+    with pytest.raises(ValueError, match='a crushed clump splits'):   # issue 47, item 2: ClumpKind.crush
+        k.replace(cid, None, True)
     with pytest.raises(NotImplementedError, match='issue 47, item 3'):
-        k.resize(0, 0.9)
+        k.resize(cid, 0.9)
 
 
 def test_clump_stress_against_the_sum_over_its_contacts():
@@ -123,7 +125,14 @@ def test_clump_stress_against_the_sum_over_its_contacts():
     scale = np.abs(expected).max()
     assert scale > 0 and expected[2, 2] < 0
     np.testing.assert_allclose(got[cid], expected, rtol=0, atol=1e-9 * scale)
-    assert np.all(got[s] == 0) and np.all(got[list(members)] == 0)
+    assert np.all(got[list(members)] == 0)
+    # the free sphere is a grain of the clump kind too (a one-member piece of a split clump): YADE's own tensor
+    np.testing.assert_array_equal(got[s], _ballast_own(s))
+
+
+def _ballast_own(bid):
+    from ballast import _ballast
+    return _ballast.matricesToArray(utils.bodyStressTensors())[bid]
 
 
 def test_clump_stress_binding_checks_its_arguments():

@@ -101,10 +101,11 @@ class BallastCrushEngine(BallastEngine):
         if len(hit):
             pw0 = self._dtBefore()
             fragments = []
-            for k in hit:
+            tensors = harvest.stresses(ids[hit])  # this step's, read once before any change (a clump splits by it)
+            for j, k in enumerate(hit):
                 if se[k] <= ft[k]:
                     d['nFatigueCrushed'] += 1
-                newIds = self._replace(tab, int(ids[k]), float(radii[k]), float(se[k]), float(strength[k]))
+                newIds = self._replace(tab, int(ids[k]), float(radii[k]), float(se[k]), float(strength[k]), tensors[j])
                 if self.fatigue:  # fragments start undamaged (docs/fatigue.md)
                     d['_fatigue'].fresh(newIds)
                 fragments += newIds
@@ -113,14 +114,19 @@ class BallastCrushEngine(BallastEngine):
             changed = True
         return d['_replacements'].grow(tab, self.growTime, d) or changed
 
-    def _replace(self, tab, bid, r, se, ft):
-        """Section 2: the grain (r_eq r [m]) is erased and replaced by fragments inside it (Fig. 1), by its kind."""
+    def _fragments(self, pos, r):
+        """Fig. 1's fragments inside the grain at pos of r_eq r [m], the next orientation of the engine's sequence."""
+        frags = _ballast.placeFragments(self.pattern, (pos[0], pos[1], pos[2]), r, self.seed, self._counter)
+        self.__dict__['_counter'] += 1
+        return frags
+
+    def _replace(self, tab, bid, r, se, ft, stress):
+        """Section 2: the grain (r_eq r [m], stress tensor stress [Pa]) crushes as its kind says: a sphere is erased
+        and replaced by fragments inside it (Fig. 1), a clump splits into pieces of its members (docs/grains.md)."""
         pos = Vector3(O.bodies[bid].state.pos)
         neighbours = energy.partners([bid])
         before = energy.snapshot([bid])  # kinetic and elastic energy of the grain and its neighbours
-        frags = _ballast.placeFragments(self.pattern, (pos[0], pos[1], pos[2]), r, self.seed, self._counter)
-        self.__dict__['_counter'] += 1
-        rep = tab.kind.replace(bid, frags, self.keep == 'mass')
+        rep = tab.kind.crush(bid, stress, lambda: self._fragments(pos, r), self.keep == 'mass')
         tab.replaced(bid, rep.ids, rep.radii, rep.mask)
         d = self.__dict__
         d['nCrushed'] += 1
@@ -129,7 +135,10 @@ class BallastCrushEngine(BallastEngine):
         self._event('crush', bid, pos, r, se, ft, rep.ids)
         k = len(d['_events']) - 1
         d['_events'][k]['energyBefore'] = before
-        d['_replacements'].added(k, rep.ids, neighbours, self.keep == 'volume', rep.volumeRatio)
+        if rep.split is not None:  # a clump's pieces: volumeLost above is minus the overlap they share
+            d['_events'][k]['split'] = rep.split
+        # pieces of a clump keep its volume (ratio 1): nothing to regrow; fragments always have less
+        d['_replacements'].added(k, rep.ids, neighbours, self.keep == 'volume' and rep.volumeRatio != 1, rep.volumeRatio)
         return rep.ids
 
 

@@ -15,8 +15,8 @@ The interface (:class:`GrainKind`) answers, for the grains of the current scene:
 * the stress of a grain (the Love-Weber fabric stress, eq. 3), as one array by body id read in C++,
   and a cheap C++ signature that changes whenever a grain is added, erased or resized (ballast.harvest
   caches on it);
-* the changes the engines make: :meth:`~GrainKind.replace` (a crushed grain erased, sphere fragments
-  added: :class:`Replaced`) and :meth:`~GrainKind.resize` (abraded or grown: :class:`Resized`), and
+* the changes the engines make: :meth:`~GrainKind.crush` (a crushed grain: by default erased and
+  replaced by sphere fragments, :meth:`~GrainKind.replace`; a clump splits into pieces: :class:`Replaced`) and :meth:`~GrainKind.resize` (abraded or grown: :class:`Resized`), and
   :meth:`~GrainKind.grainOf`, the grain a contact's body belongs to.
 
 Which kind a scene holds. :func:`current` is the default kind, 'sphere', unless :func:`use` chose
@@ -38,9 +38,11 @@ from ..geometry import equivalentRadius
 
 DEFAULT = 'sphere'
 
-# What replace() did: the new grains' ids, their r_eq [m] and group mask, the volume [m^3] and mass [kg]
-# of the grain and of its fragments, and the grain's volume over its fragments' [-] (the growth target).
-Replaced = namedtuple('Replaced', 'ids radii mask volumeBefore volumeAfter massBefore massAfter volumeRatio')
+# What replace() or crush() did: the new grains' ids, their r_eq [m] and group mask, the volume [m^3] and mass
+# [kg] of the grain and of its fragments or pieces, the grain's volume over theirs [-] (the growth target; 1:
+# nothing to regrow), and for a split clump a dict of what the split did (None otherwise).
+Replaced = namedtuple('Replaced', 'ids radii mask volumeBefore volumeAfter massBefore massAfter volumeRatio split',
+                      defaults=(None,))
 # What resize() did: r_eq before and after [m], the volume before [m^3], the mass before and after [kg].
 Resized = namedtuple('Resized', 'radiusBefore radiusAfter volumeBefore massBefore massAfter')
 
@@ -104,7 +106,8 @@ class GrainKind:
         return self.radii(ids)
 
     def signature(self):
-        """A number (C++, no loop in Python) that changes when a grain is added, erased or resized."""
+        """A value compared for equality (C++, no loop in Python) that changes when a grain is added, erased or
+        resized."""
         raise NotImplementedError
 
     def stressTensors(self):
@@ -121,6 +124,13 @@ class GrainKind:
         colour and mask, moving with it as a rigid body; keepMass: their masses and inertia scaled to its
         mass. Returns :class:`Replaced`."""
         raise NotImplementedError
+
+    def crush(self, bid, stress, fragments, keepMass):
+        """Grain bid crushed (section 2) under its stress tensor stress (3,3) [Pa]; fragments() gives the paper's
+        sphere fragments ((n, 4): x, y, z, r [m]) and is called only by a kind that uses them. The kind decides
+        what a crush does: by default the grain is replaced by those fragments (:meth:`replace`). Returns
+        :class:`Replaced`."""
+        return self.replace(bid, fragments(), keepMass)
 
     def resize(self, bid, factor):
         """Grain bid scaled by factor [-] about its centre at its density, its contacts as YADE would make

@@ -12,34 +12,47 @@ The volume of a grain is the union's, computed once when it is built (Monte Carl
 in a persistent object of the scene (:class:`ClumpVolumes`), saved by O.save and back after O.load; r_eq
 is the radius of the sphere of that volume. The stress of a grain is its Love-Weber tensor over its
 members' contacts with other bodies, branch vectors from its centre of mass, over its volume, reduced in
-C++ (``_ballast.clumpStresses``) from YADE's per-member tensors. Crushing (splitting) and chipping of
-clumps are issue 47 items 2-3: :meth:`ClumpKind.replace` and :meth:`ClumpKind.resize` refuse.
+C++ (``_ballast.clumpStresses``) from YADE's per-member tensors.
+
+A crushed clump splits (issue 47, item 2, :meth:`ClumpKind.split`, docs/grains.md "Crushing a clump"): its
+members are shared out among pieces cut by planes through its centre oriented by its principal stresses
+(``_ballast.clumpSplit``); a piece of several members is clumped again, a piece of one member is a free
+sphere. A free sphere (``Sphere``, not a member) is a grain of this kind too and follows the paper's sphere
+model (the sphere kind's volume, stress, replacement and resizing). Chipping a clump is item 3:
+:meth:`ClumpKind.resize` refuses a clump.
 """
 import numpy as np
 from yade import O, Quaternion, Vector3, utils
+from yade.wrapper import Sphere
 
-from .. import _ballast, runtime
-from ..geometry import sphereVolume
-from . import GrainKind, register
-from .clumpshapes import ELONGATION, FLATNESS, N_SPHERES, clumpMembers
+from .. import _ballast, contacts, runtime
+from ..geometry import equivalentRadius, sphereVolume
+from . import GrainKind, Replaced, register
+from .clumpshapes import ELONGATION, FLATNESS, N_SPHERES, clumpMembers, pieceShares
+from .sphere import SphereKind
 
 DISCRETIZATION = 40   # YADE's grid for the clump's mass and inertia: cells of rMin/40 (see the module doc)
+# Monte Carlo points for the pieces' shares of a split clump's volume: a crush costs about 0.3 s of Python for
+# 8 members, and a share's relative standard error is about sqrt((1 - q)/(q N)) < 0.5 % for shares q > 0.05
+SPLIT_SAMPLES = 100000
+_SPHERE = SphereKind()   # a free sphere of a clump scene is a grain of the paper's model
 
 
 @runtime.persistent('ClumpVolumes')
 class ClumpVolumes:
     """Union volume [m^3] of every clump grain of a scene, by clump body id; saved with the scene."""
 
-    def __init__(self, volumes=None):
+    def __init__(self, volumes=None, splits=0):
         self.volumes = dict(volumes or {})
+        self.splits = splits   # clumps split so far: the kind's signature (a split may add no sphere and no body)
 
     def state(self):
         ids = sorted(self.volumes)
-        return {'ids': ids, 'volumes': runtime.packArray([self.volumes[i] for i in ids])}
+        return {'ids': ids, 'volumes': runtime.packArray([self.volumes[i] for i in ids]), 'splits': self.splits}
 
     @classmethod
     def fromState(cls, s, ref):
-        return cls(zip(s['ids'], runtime.unpackArray(s['volumes']).tolist()))
+        return cls(zip(s['ids'], runtime.unpackArray(s['volumes']).tolist()), s.get('splits', 0))
 
 
 def _store(create=False):
@@ -78,8 +91,14 @@ def appendClump(spheres, volume, discretization=DISCRETIZATION):
     if not volume > 0:
         raise ValueError('volume: expected the union volume of the members > 0 [m^3], got %r' % (volume,))
     cid, _ = O.bodies.appendClumped(spheres, discretization=discretization)
+    O.bodies[cid].material = spheres[0].material   # YADE leaves the clump body none; moduli() reads it
     _store(create=True).volumes[int(cid)] = float(volume)
     return int(cid)
+
+
+def _isSphere(body):
+    """A free sphere: exactly Sphere (a GridNode is a membrane's node) and no clump's member."""
+    return type(body.shape) is Sphere and not body.isClumpMember
 
 
 class ClumpKind(GrainKind):
@@ -87,54 +106,75 @@ class ClumpKind(GrainKind):
     oneSphere = False
 
     def __init__(self):
-        self._owners = (None, None)   # ((epoch, signature, len(O.bodies)), member -> clump map)
+        self._owners = (None, None)   # ((epoch, signature, len(O.bodies)), (member -> clump map, free spheres))
 
     def isGrain(self, body):
-        return body.isClump
+        """A clump, or a free sphere (a piece of one member of a split clump, or a sphere put in the scene)."""
+        return body.isClump or _isSphere(body)
 
     def volumes(self, ids):
-        """Union volumes [m^3] kept when each clump was built (KeyError naming a clump built otherwise)."""
+        """Union volumes [m^3] kept when each clump was built or split (KeyError naming a clump built otherwise);
+        4/3 pi r^3 of a free sphere."""
         v = _store().volumes
-        missing = [int(i) for i in ids if int(i) not in v]
+        bodies = [O.bodies[int(i)] for i in ids]
+        missing = [b.id for b in bodies if b.isClump and b.id not in v]
         if missing:
             raise KeyError('clump kind: no stored volume for clump(s) %s; build clump grains with '
                            'grainkinds.clump.addClump' % missing[:5])
-        return np.array([v[int(i)] for i in ids], dtype=float)
+        return np.array([v[b.id] if b.isClump else sphereVolume(b.shape.radius) for b in bodies], dtype=float)
+
+    def radii(self, ids):
+        """r_eq [m]: of the sphere of a clump's union volume; a free sphere's own radius (the sphere model's)."""
+        bodies = [O.bodies[int(i)] for i in ids]
+        v = _store().volumes
+        return np.array([float(equivalentRadius(v[b.id])) if b.isClump else b.shape.radius for b in bodies],
+                        dtype=float)
 
     def signature(self):
-        """Total volume of the scene's spheres, clump members included [m^3] (YADE, C++): changes when a
-        clump is added or erased with its members."""
-        return utils.getSpheresVolume()
+        """(Total volume of the scene's spheres, clump members included [m^3] (YADE, C++), clumps split so far):
+        changes when a clump is added or erased with its members, or split (which keeps every sphere)."""
+        return (utils.getSpheresVolume(), _store().splits)
 
     def _ownerMap(self):
-        """Array: body id -> the clump it belongs to (itself when not a member); rebuilt when the scene's
-        bodies change (runtime epoch, signature, number of ids)."""
+        """(Array: body id -> the clump it belongs to (itself when not a member), ids of the free spheres); rebuilt
+        when the scene's bodies change (runtime epoch, signature, number of ids)."""
         key = (runtime.epoch(), self.signature(), len(O.bodies))
         if self._owners[0] != key:
             own = np.arange(len(O.bodies), dtype=np.int64)
-            pairs = [(b.id, b.clumpId) for b in O.bodies if b is not None and b.isClumpMember]
+            pairs, free = [], []
+            for b in O.bodies:
+                if b is None:
+                    continue
+                if b.isClumpMember:
+                    pairs.append((b.id, b.clumpId))
+                elif _isSphere(b):
+                    free.append(b.id)
             if pairs:
                 p = np.array(pairs, dtype=np.int64)
                 own[p[:, 0]] = p[:, 1]
-            self._owners = (key, own)
+            self._owners = (key, (own, np.array(free, dtype=np.int64)))
         return self._owners[1]
 
     def grainOf(self, bodyIds):
         """The clump of each member id; any other body maps to itself."""
         ids = np.asarray(bodyIds, dtype=np.int64)
-        return self._ownerMap()[ids]
+        return self._ownerMap()[0][ids]
 
     def stressTensors(self):
         """Love-Weber stress [Pa] of every clump as one grain, (len(O.bodies), 3, 3) by body id (rows of
         other bodies zero): sigma V = sum_m [sigma_m V_m + F_m (x) (x_m - X)] (ClumpStress.hpp), sigma_m
-        YADE's bodyStressTensors (V_m = 4/3 pi r_m^3), F_m the member's contact forces summed here."""
+        YADE's bodyStressTensors (V_m = 4/3 pi r_m^3), F_m the member's contact forces summed here. A free
+        sphere's row is YADE's own tensor, as the sphere kind's."""
         nb = len(O.bodies)
         out = np.zeros((nb, 3, 3))
-        own = self._ownerMap()
+        own, free = self._ownerMap()
         members = np.nonzero(own != np.arange(nb))[0]
-        if len(members) == 0:
+        if len(members) == 0 and len(free) == 0:
             return out
         S = _ballast.matricesToArray(utils.bodyStressTensors())
+        out[free] = S[free]
+        if len(members) == 0:
+            return out
         rows = [(i.id1, i.id2, *(i.phys.normalForce + i.phys.shearForce)) for i in O.interactions if i.isReal]
         F = np.zeros((nb, 3))
         if rows:
@@ -151,12 +191,81 @@ class ClumpKind(GrainKind):
                                              self.volumes(clumps))
         return out
 
+    def crush(self, bid, stress, fragments, keepMass):
+        """A clump splits (:meth:`split`, under its stress tensor [Pa]); a free sphere is replaced by the paper's
+        fragments (the sphere kind)."""
+        if O.bodies[bid].isClump:
+            return self.split(bid, stress)
+        return _SPHERE.replace(bid, fragments(), keepMass)
+
     def replace(self, bid, fragments, keepMass):
-        raise NotImplementedError('clump kind: crushing a clump (splitting it into pieces) is not yet implemented '
-                                  '(issue 47, item 2)')
+        """A free sphere: as the sphere kind. A clump is never replaced by spheres: it splits (crush)."""
+        if O.bodies[bid].isClump:
+            raise ValueError('clump kind: grain %d is a clump; a crushed clump splits into pieces of its members '
+                             '(ClumpKind.crush, issue 47 item 2), it is not replaced by sphere fragments' % bid)
+        return _SPHERE.replace(bid, fragments, keepMass)
 
     def resize(self, bid, factor):
-        raise NotImplementedError('clump kind: chipping or resizing a clump is not yet implemented (issue 47, item 3)')
+        """A free sphere: as the sphere kind. Chipping or resizing a clump is issue 47, item 3."""
+        if O.bodies[bid].isClump:
+            raise NotImplementedError('clump kind: chipping or resizing a clump is not yet implemented '
+                                      '(issue 47, item 3)')
+        return _SPHERE.resize(bid, factor)
+
+    def split(self, bid, stress):
+        """Clump bid split into pieces under its stress tensor (3,3) [Pa] (docs/grains.md, "Crushing a clump"):
+        the pieces of ``_ballast.clumpSplit`` (planes through its centre of mass, by its principal stresses) take
+        its members; a piece of several members is clumped again (YADE's mass and inertia), a piece of one is a
+        free sphere. The pieces' masses and inertias are scaled by one factor so their masses sum to the clump's
+        (members shared across the planes would otherwise count their common overlap twice); each moves with the
+        clump's rigid velocity about the pieces' joint centre of mass, so momentum is kept. Members of different
+        pieces that overlap (inside the clump they had no contact) get a contact of zero stiffness, which
+        carries no force until they part (:func:`ballast.contacts.silence`). Returns :class:`Replaced` (volume
+        ratio 1: nothing to regrow) with ``split``: pieces, the plane normals, whether the median fallback
+        was used, the silenced pairs and the volume the pieces hold in common [m^3]."""
+        c = O.bodies[bid]
+        st, mask, material = c.state, c.groupMask, c.material
+        M, v, w, scaling, blocked = st.mass, Vector3(st.vel), Vector3(st.angVel), st.densityScaling, st.blockedDOFs
+        members = sorted(c.shape.members.keys())
+        bodies = [O.bodies[m] for m in members]
+        pos = np.array([tuple(b.state.pos) for b in bodies], dtype=float)
+        radii = np.array([b.shape.radius for b in bodies], dtype=float)
+        cut = _ballast.clumpSplit(np.asarray(stress, dtype=float), tuple(st.pos), pos, radii)
+        piece, n = cut['piece'], cut['nPieces']
+        store = _store(create=True)
+        V0 = store.volumes.pop(bid)
+        shares = pieceShares(pos, radii, piece, samples=SPLIT_SAMPLES)
+        O.bodies.erase(bid)   # its members stay, free (YADE's erase without eraseClumpMembers)
+        ids = []
+        for k in range(n):
+            own = [members[j] for j in np.flatnonzero(piece == k).tolist()]
+            if len(own) == 1:
+                ids.append(own[0])
+            else:
+                cid = O.bodies.clump(own, discretization=DISCRETIZATION)
+                O.bodies[cid].material = material   # YADE's clump() leaves none; moduli() and the grain table read it
+                store.volumes[cid] = V0 * float(shares[k])
+                ids.append(cid)
+        store.splits += 1
+        new = [O.bodies[i] for i in ids]
+        scale = M / sum(b.state.mass for b in new)
+        for b in new:
+            b.state.mass *= scale
+            b.state.inertia = b.state.inertia * scale
+        Xn = sum((b.state.pos * b.state.mass for b in new), Vector3(0, 0, 0)) / M
+        for b in new:
+            b.groupMask = mask
+            b.state.vel = v + w.cross(b.state.pos - Xn)
+            b.state.angVel = w
+            b.state.densityScaling = scaling
+            b.state.blockedDOFs = blocked
+        pairs = [[members[i], members[j]] for i, j in cut['pairs'].tolist()]
+        for i, j in pairs:
+            contacts.silence(utils.createInteraction(i, j))
+        Va = float(np.sum(self.volumes(ids)))
+        note = {'pieces': n, 'normals': cut['normals'].tolist(), 'median': bool(cut['median']),
+                'silenced': pairs, 'sharedVolume': Va - V0}
+        return Replaced(ids, self.radii(ids), mask, V0, Va, M, sum(b.state.mass for b in new), 1.0, note)
 
 
 register(ClumpKind())
