@@ -19,6 +19,7 @@ from ballast.experiments import cyclic  # noqa: E402
 from ballast.experiments.triaxial import TriaxialTest  # noqa: E402
 from ballast.experiments.triaxial.outputs import OWN_COLUMNS  # noqa: E402
 from ballast.experiments.triaxial.strains import axialStrain, volumetricStrain  # noqa: E402
+from ballast.params import ParamError  # noqa: E402
 from test_triaxial_membrane import crossing  # noqa: E402
 
 SMALL = dict(diameter=0.12, height=0.24, dMin=0.02, dMax=0.03, layers=2, young=3e9, prepYoung=3e8, f=20.0, cycles=2,
@@ -172,3 +173,19 @@ def test_monotonic_refuses_the_options_of_cycles():
     for k, v in (('quasiStatic', 1e-3), ('jump', True)):
         with pytest.raises(ParamError, match='TriaxialTest: %s = .* not a monotonic compression' % k):
             check(dict(monotonic=True, **{k: v}, **({'fatigue': True} if k == 'jump' else {})))
+
+
+def test_a_long_run_goes_on_in_slices(run, tmp_path):
+    """continueFrom: the saved run's state goes on for `cycles` more cycles in this run's folder, its cycles.csv
+    numbering on from the saved run's (1, 2, then 3), its run.json naming the state; a physics parameter that
+    differs from the saved run's is refused before any step, naming it."""
+    state = os.path.join(run[2], 'state-end.yade.gz')
+    s = TriaxialTest(results=str(tmp_path), runId='slice', continueFrom=state, **dict(SMALL, cycles=1, vtk=0)).run()
+    cyc = pd.read_csv(os.path.join(str(tmp_path), s['runId'], 'cycles.csv'))
+    assert list(cyc.cycle) == [1, 2, 3] and s['cycles'] == 3
+    with open(os.path.join(str(tmp_path), s['runId'], 'run.json')) as fh:
+        assert json.load(fh)['continuesState'] == state
+    with pytest.raises(ParamError, match='young = 4000000000.0 is not allowed with continueFrom'):
+        TriaxialTest(results=str(tmp_path), runId='other', continueFrom=state, **dict(SMALL, young=4e9)).run()
+    with pytest.raises(ParamError, match='continueFrom'):
+        TriaxialTest(continueFrom=str(tmp_path / 'none.yade.gz'), **SMALL)

@@ -210,6 +210,15 @@ class Cyclic:
         """cycles.csv as it stands, a DataFrame (each experiment's outputs make it)."""
         raise NotImplementedError
 
+    def goOn(self):
+        """The run saved in continueFrom, reopened with this run's folder and reporting, `cycles` more cycles (a
+        long run in slices). ParamError naming the first physics parameter that differs from the saved run's, before
+        any step."""
+        p = self.p
+        saved = type(self).reopen(p['continueFrom'], **{k: p[k] for k in self.REOPEN_PARAMS})
+        self.requireSamePhysics(saved, 'continueFrom')
+        return saved.load(p['cycles'])
+
     # ------------------------------------------------------------------ cycle jumping (experiments.cyclejump)
     def startJumping(self):
         """With jump: the jumper (self.jumper, a piece) and, first in the chain, the callback that makes a jump at

@@ -186,6 +186,10 @@ VTK = Param(0.0, 'cycles', 'a VTK frame (the grains with their state, the contac
             'load cycles from the start of loading and one at its end, listed in a .pvd for ParaView (0.1: ten frames '
             'a cycle; 0 = none)', nonNegative, CYCLES_ALLOWED)
 CYCLE_OUTPUTS = {'saveEvery': SAVE_EVERY, 'vtk': VTK}
+# a long run of a cyclic experiment in slices (experiments.cyclic.Cyclic.goOn): its check is the experiment's
+CONTINUE_FROM = Param('', 'path', 'a state a run of this experiment saved (state-end or state-cycle<N>.yade.gz): go on '
+                      'from it for `cycles` more cycles, into this run\'s folder (a long run in slices; the physics '
+                      'must be the saved run\'s: a difference is refused, naming the parameter)', anyText, 'a path', text)
 
 
 class ExperimentParameters(Parameters):

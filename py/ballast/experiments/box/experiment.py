@@ -270,14 +270,6 @@ class BoxTest(Cyclic, Experiment):
             return self.goOn()
         return Experiment.run(self)
 
-    def goOn(self):
-        """The run saved in continueFrom, reopened with this run's folder and reporting, `cycles` more cycles.
-        ParamError naming the first physics parameter that differs from the saved run's, before any step."""
-        p = self.p
-        saved = BoxTest.reopen(p['continueFrom'], **{k: p[k] for k in self.REOPEN_PARAMS})
-        self.requireSamePhysics(saved, 'continueFrom')
-        return saved.load(p['cycles'])
-
     def resumed(self, state):
         """Experiment.resumeKilled's last step: this run, reopened from `state` in the folder of its killed
         process, cuts samples.csv back to the state's time (the rows after it are taken again) and goes on to the

@@ -10,8 +10,8 @@ import os
 
 from ...params import NUMBER_NONNEGATIVE, NUMBER_POSITIVE, Param, anyText, between, boolean, flag, intBetween, nonNegative, \
     positive, positiveInt, text
-from ..parameters import (CONTACT, CYCLE_JUMP, ENGINES, GRAINS, INTEGRATION, PHI, PREPARATION, RUN, SEED, STEEL,
-                          CYCLE_OUTPUTS, QUASI_STATIC, ExperimentParameters, take)
+from ..parameters import (CONTACT, CONTINUE_FROM, CYCLE_JUMP, ENGINES, GRAINS, INTEGRATION, PHI, PREPARATION, RUN, SEED,
+                          STEEL, CYCLE_OUTPUTS, QUASI_STATIC, ExperimentParameters, take)
 from ..loadhistory import LoadHistory
 
 OWNER = 'BoxTest'
@@ -62,9 +62,7 @@ PARAMS = {
     'rollingFriction': CONTACT['rollingFriction'].withDefault(0.3, CONTACT['rollingFriction'].doc.replace(
         "0: none, the paper's spheres", "0: none, the paper's spheres (which let the sleeper punch in); 0.3 by default "
         "here")),
-    'continueFrom': Param('', 'path', 'a state a box test saved (state-end or state-cycle<N>.yade.gz): go on from it '
-                          'for `cycles` more cycles, into this run\'s folder (a long run in slices; the physics must be '
-                          'the saved run\'s: a difference is refused, naming the parameter)', anyText, 'a path', text),
+    'continueFrom': CONTINUE_FROM,
     'resume': Param(False, '-', 'go on with the run killed in <results>/<runId> (run.json "running") from the last state '
                     'it saved (saveEvery), in its folder, to the end it was going to; with no such run, start afresh '
                     '(docs/box.md, "A killed run goes on")', boolean, '0 or 1', flag),

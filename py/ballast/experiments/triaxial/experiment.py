@@ -21,6 +21,7 @@ from ...settlementlaws import bedChanged
 from .. import breakage, chain, grains, preparation, quasistatic, scene
 from ..base import Experiment
 from ..cyclic import Cyclic, appendSample
+from ..parameters import CYCLE_JUMP
 from . import monotonic, outputs, specimen
 from .membrane import Membrane
 from .parameters import OWNER, PARAMS, TriaxialParameters
@@ -44,7 +45,8 @@ class TriaxialTest(Cyclic, Experiment):
 
     NAME = 'triaxial'
     Parameters = TriaxialParameters
-    REOPEN_PARAMS = ('results', 'runId', 'progress', 'vtk', 'cycles', 'saveEvery', 'specimenDir')
+    REOPEN_PARAMS = ('results', 'runId', 'progress', 'vtk', 'cycles', 'saveEvery', 'specimenDir', 'continueFrom') + \
+        tuple(CYCLE_JUMP)
 
     def __init__(self, parameters=None, **params):
         self.rig = self.membrane = self.recorder = None
@@ -191,6 +193,13 @@ class TriaxialTest(Cyclic, Experiment):
     def grade(self, k):
         if all(g['cycle'] != k for g in self.gradings):
             self.gradings.append(breakage.grading(self, k))
+
+    def run(self):
+        """prepare() and load(); with continueFrom, the saved run reopened into this run's folder and `cycles` more
+        cycles of it (Cyclic.goOn). Returns the summary."""
+        if self.p['continueFrom']:
+            return self.goOn()
+        return Experiment.run(self)
 
     def cyclesDone(self):
         return len(self.recorder.cycles) + self.recorder.jumped if self.recorder is not None else 0

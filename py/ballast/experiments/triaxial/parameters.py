@@ -11,8 +11,8 @@ import os
 
 from ...params import NUMBER_NONNEGATIVE, NUMBER_POSITIVE, Param, anyText, between, boolean, choice, flag, intBetween, \
     nonNegative, positive, positiveInt, text
-from ..parameters import (CONTACT, CYCLE_JUMP, CYCLE_OUTPUTS, ENGINES, GRAINS, INTEGRATION, PREPARATION, QUASI_STATIC,
-                          RUN, SEED, STEEL, ExperimentParameters, take)
+from ..parameters import (CONTACT, CONTINUE_FROM, CYCLE_JUMP, CYCLE_OUTPUTS, ENGINES, GRAINS, INTEGRATION, PREPARATION,
+                          QUASI_STATIC, RUN, SEED, STEEL, ExperimentParameters, take)
 from ..loadhistory import LoadHistory
 from .strains import CurveError, readReference
 
@@ -90,6 +90,7 @@ PARAMS = {
     **RUN,
     **CYCLE_JUMP,
     **CYCLE_OUTPUTS,
+    'continueFrom': CONTINUE_FROM,
     **QUASI_STATIC,
 }
 
@@ -120,6 +121,7 @@ class TriaxialParameters(ExperimentParameters):
     """The triaxial test's checked parameters (frozen) and what follows from them."""
 
     OWNER, PARAMS = OWNER, PARAMS
+    STARTED_FROM = ('continueFrom',)
 
     def history(self):
         """The deviator's cycle from loadFile (LoadHistory, read once a process), None for the sine."""
@@ -181,7 +183,7 @@ class TriaxialParameters(ExperimentParameters):
         if p['loadFile']:
             self.checkLoadFile(('qMin', 'qMax', 'f'), 'deviator')
         if p['monotonic']:
-            for k in ('loadFile', 'quasiStatic', 'jump'):
+            for k in ('loadFile', 'quasiStatic', 'jump', 'continueFrom'):
                 if p[k]:
                     bad(k, 'is for load cycles, not a monotonic compression (monotonic 1): %s' % (
                         'give densityStep or timeStep stiffness for fewer steps' if k == 'quasiStatic' else
@@ -194,6 +196,8 @@ class TriaxialParameters(ExperimentParameters):
         if p['membraneCell'] and p['membraneCell'] < p['dMin'] / 20:
             bad('membraneCell', '%g m is under dMin / 20 = %g m: cells far finer than the grains cost without use' % (
                 p['membraneCell'], p['dMin'] / 20))
+        if p['continueFrom'] and not os.path.isfile(p['continueFrom']):
+            bad('continueFrom', 'no such state file')
         try:
             self.references()
         except CurveError as e:
