@@ -21,6 +21,8 @@ sphere. A free sphere (``Sphere``, not a member) is a grain of this kind too and
 model (the sphere kind's volume, stress, replacement and resizing). Chipping a clump is item 3:
 :meth:`ClumpKind.resize` refuses a clump.
 """
+import math
+
 import numpy as np
 from yade import O, Quaternion, Vector3, utils
 from yade.wrapper import Sphere
@@ -215,14 +217,16 @@ class ClumpKind(GrainKind):
     def split(self, bid, stress):
         """Clump bid split into pieces under its stress tensor (3,3) [Pa] (docs/grains.md, "Crushing a clump"):
         the pieces of ``_ballast.clumpSplit`` (planes through its centre of mass, by its principal stresses) take
-        its members; a piece of several members is clumped again (YADE's mass and inertia), a piece of one is a
-        free sphere. The pieces' masses and inertias are scaled by one factor so their masses sum to the clump's
-        (members shared across the planes would otherwise count their common overlap twice); each moves with the
-        clump's rigid velocity about the pieces' joint centre of mass, so momentum is kept. Members of different
-        pieces that overlap (inside the clump they had no contact) get a contact of zero stiffness, which
-        carries no force until they part (:func:`ballast.contacts.silence`). Returns :class:`Replaced` (volume
-        ratio 1: nothing to regrow) with ``split``: pieces, the plane normals, whether the median fallback
-        was used, the silenced pairs and the volume the pieces hold in common [m^3]."""
+        its members. The clump's volume V is partitioned among them (clumpshapes.pieceShares: the overlap of members
+        of two pieces goes to the one a point lies deeper in), each piece's volume V q_p and mass M q_p, so volume
+        and mass are kept exactly and the density with them: a piece of several members is clumped again (YADE's
+        inertia, scaled to its mass), a piece of one is a free sphere shrunk to its volume (it gives up its part of
+        the lenses it shared; a smaller sphere creates no overlap). Each piece moves with the clump's rigid velocity
+        about the pieces' joint centre of mass, so momentum is kept. Members of different pieces that still
+        overlap (inside the clump they had no contact) get a contact of zero stiffness, which carries no force
+        until they part (:func:`ballast.contacts.silence`). Returns :class:`Replaced` (volume ratio 1: nothing to
+        regrow) with ``split``: pieces, the plane normals, whether the median fallback was used, the silenced
+        pairs and the pieces' shares of the volume."""
         c = O.bodies[bid]
         st, mask, material = c.state, c.groupMask, c.material
         M, v, w, scaling, blocked = st.mass, Vector3(st.vel), Vector3(st.angVel), st.densityScaling, st.blockedDOFs
@@ -239,8 +243,11 @@ class ClumpKind(GrainKind):
         ids = []
         for k in range(n):
             own = [members[j] for j in np.flatnonzero(piece == k).tolist()]
-            if len(own) == 1:
-                ids.append(own[0])
+            if len(own) == 1:   # a free sphere of its share of the volume: shrunk from its member's radius
+                i = own[0]
+                r = O.bodies[i].shape.radius
+                _SPHERE.resize(i, min(1.0, (3 * V0 * float(shares[k]) / (4 * math.pi)) ** (1 / 3) / r))
+                ids.append(i)
             else:
                 cid = O.bodies.clump(own, discretization=DISCRETIZATION)
                 O.bodies[cid].material = material   # YADE's clump() leaves none; moduli() and the grain table read it
@@ -248,10 +255,10 @@ class ClumpKind(GrainKind):
                 ids.append(cid)
         store.splits += 1
         new = [O.bodies[i] for i in ids]
-        scale = M / sum(b.state.mass for b in new)
-        for b in new:
-            b.state.mass *= scale
-            b.state.inertia = b.state.inertia * scale
+        for b, q in zip(new, shares):   # each piece its share of the mass: the masses sum to M, the density kept
+            f = M * float(q) / b.state.mass
+            b.state.mass *= f
+            b.state.inertia = b.state.inertia * f
         Xn = sum((b.state.pos * b.state.mass for b in new), Vector3(0, 0, 0)) / M
         for b in new:
             b.groupMask = mask
@@ -259,12 +266,15 @@ class ClumpKind(GrainKind):
             b.state.angVel = w
             b.state.densityScaling = scaling
             b.state.blockedDOFs = blocked
-        pairs = [[members[i], members[j]] for i, j in cut['pairs'].tolist()]
+        # members of two pieces that still overlap (a shrunk free sphere may have parted): a contact without force
+        pairs = [[members[i], members[j]] for i, j in cut['pairs'].tolist()
+                 if (O.bodies[members[i]].state.pos - O.bodies[members[j]].state.pos).norm()
+                 < O.bodies[members[i]].shape.radius + O.bodies[members[j]].shape.radius]
         for i, j in pairs:
             contacts.silence(utils.createInteraction(i, j))
         Va = float(np.sum(self.volumes(ids)))
         note = {'pieces': n, 'normals': cut['normals'].tolist(), 'median': bool(cut['median']),
-                'silenced': pairs, 'sharedVolume': Va - V0}
+                'silenced': pairs, 'shares': [float(q) for q in shares]}
         return Replaced(ids, self.radii(ids), mask, V0, Va, M, sum(b.state.mass for b in new), 1.0, note)
 
 

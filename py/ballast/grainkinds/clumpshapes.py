@@ -49,11 +49,11 @@ def unionVolume(centres, radii, samples=SAMPLES, seed=0):
 
 
 def pieceShares(centres, radii, piece, samples=SAMPLES, seed=0):
-    """The union volume of each piece of a split clump over the union volume of the whole clump [-], an array
-    of max(piece) + 1 (piece: the piece of each sphere, 0 ... k-1), from the same Monte Carlo points as
-    :func:`unionVolume`'s (same box, seed and count): shares sum to more than 1 by the overlap the pieces hold
-    in common (a point inside members of two pieces counts for both), and that excess is sampled without the
-    noise of two independent estimates."""
+    """The share of each piece of a split clump in the clump's union volume [-], an array of max(piece) + 1 (piece:
+    the piece of each sphere, 0 ... k-1), from the same Monte Carlo points as :func:`unionVolume`'s (same box, seed
+    and count). The union is partitioned: a point inside members of several pieces (their overlap, cut by a plane)
+    goes to the piece of the member it lies deepest in (largest r - |x - c|, the side of the lens's radical plane
+    for equal spheres), so the shares sum to 1 exactly and the pieces' volumes, V times their shares, to V."""
     piece = np.asarray(piece, dtype=np.int64).reshape(-1)
     _check('piece', piece, len(piece) == len(np.asarray(centres).reshape(-1, 3)) and len(piece) > 0
            and piece.min() >= 0, 'one piece index >= 0 per sphere')
@@ -62,7 +62,8 @@ def pieceShares(centres, radii, piece, samples=SAMPLES, seed=0):
 
 
 def _sample(centres, radii, piece, samples, seed):
-    """(V_box [m^3], points inside the union, points inside each piece (one piece without pieces))."""
+    """(V_box [m^3], points inside the union, points of each piece (one piece without pieces)): a point inside the
+    union belongs to the piece of the member it lies deepest in."""
     c = np.asarray(centres, dtype=float).reshape(-1, 3)
     r = np.asarray(radii, dtype=float).reshape(-1)
     _check('radii', radii, len(r) == len(c) and len(r) > 0 and np.all(r > 0) and np.all(np.isfinite(r)),
@@ -76,11 +77,11 @@ def _sample(centres, radii, piece, samples, seed):
     while done < samples:
         m = min(chunk, samples - done)
         p = lo + (hi - lo) * rng.random((m, 3))
-        inside = np.zeros((k, m), dtype=bool)
-        for ci, ri, pi in zip(c, r, piece.tolist()):
-            inside[pi] |= np.einsum('ij,ij->i', p - ci, p - ci) <= ri * ri
-        hits += int(inside.any(axis=0).sum())
-        each += inside.sum(axis=1)
+        d2 = np.stack([np.einsum('ij,ij->i', p - ci, p - ci) for ci in c])   # (n, m) squared distances
+        inside = (d2 <= (r * r)[:, None]).any(axis=0)
+        hits += int(inside.sum())
+        deepest = np.argmax(r[:, None] - np.sqrt(d2[:, inside]), axis=0)
+        each += np.bincount(piece[deepest], minlength=k)
         done += m
     return float(np.prod(hi - lo)), hits, each
 
