@@ -62,6 +62,24 @@ def test_runs_scored_against_the_curve_by_hand(tmp_path):
     assert set(curvefit.table([root], {'axialStrain': path}, [1, 1000]).cycle) == {1}
 
 
+def test_a_jumped_run_is_compared_with_its_extrapolated_strain(tmp_path):
+    """With cycle jumping a run's strain at a cycle count is the simulated one plus its extrapolation over the
+    jumped cycles (axialStrainJumped): a run at 0.015 simulated and 0.005 extrapolated at N = 100 is 0.02 there."""
+    path = curveFile(tmp_path, 'N,axial_strain\n1,0.01\n10,0.02\n100,0.03\n')
+    root = str(tmp_path / 's')
+    d = os.path.join(root, 'runs', 'j')
+    os.makedirs(d)
+    with open(os.path.join(d, 'summary.json'), 'w') as fh:
+        json.dump({'params': {'seed': 1, 'continueFrom': ''}}, fh)
+    with open(os.path.join(d, 'cycles.csv'), 'w') as fh:
+        fh.write('cycle,settlement,axialStrain,axialStrainJumped\n1,0,0.01,0\n100,0,0.015,0.005\n')
+    with open(os.path.join(root, 'study.json'), 'w') as fh:
+        json.dump({'experiment': 'triaxial', 'rows': [{'line': 2, 'runId': 'j', 'row': {'seed': '1'}}]}, fh)
+    frame = curvefit.table([root], {'axialStrain': path}, [1, 100]).set_index('cycle')
+    assert frame.simulated[100] == pytest.approx(0.02, rel=1e-12) and frame.difference[100] == pytest.approx(-0.01)
+    assert frame.simulated[1] == pytest.approx(0.01, rel=1e-12)
+
+
 def test_the_script_writes_its_files_and_refuses_what_it_cannot_read(tmp_path):
     path = curveFile(tmp_path, 'N,axial_strain\n1,0.01\n10,0.02\n100,0.03\n')
     root = study(tmp_path / 's', {'r1': (1, 0.1, list(np.linspace(0.01, 0.02, 10)))})

@@ -26,6 +26,14 @@ def smoothed(N, strain):
     return out
 
 
+def total(cycles, q):
+    """A run's quantity q per row of its cycles.csv: with cycle jumping, the simulated value plus its extrapolation
+    over the jumped cycles (<q>Jumped, as the triaxial test writes for its strains), what a measured curve at that
+    cycle count compares with."""
+    v = cycles[q].to_numpy(float)
+    return v + cycles[q + 'Jumped'].to_numpy(float) if q + 'Jumped' in cycles else v
+
+
 def measured(curves, at):
     """{column: measured values at the cycles `at`} of `curves` {column of cycles.csv: measured curve's path}
     (readReference refuses a malformed file naming its line)."""
@@ -47,7 +55,7 @@ def table(paths, curves, at, params=()):
             if q not in c:
                 raise ValueError('curvefit: %s wrote no %s in cycles.csv; it has %s' % (
                     run.runId, q, ', '.join(c.columns)))
-            byCycle = dict(zip(c.cycle.astype(int), c[q].astype(float)))
+            byCycle = dict(zip(c.cycle.astype(int), total(c, q)))
             for k, n in enumerate(at):
                 if n in byCycle and math.isfinite(reference[q][k]):
                     rows.append(dict({'study': label, 'runId': run.runId, 'seed': run.params.get('seed')},
@@ -92,7 +100,7 @@ def figure(paths, curves, path, title=''):
         ax.semilogx(N, 100 * smoothed(N, strain), 'k-', lw=1, label='measured, running median of 3')
         for _, run, c in runs:
             if q in c:
-                ax.semilogx(c.cycle, 100 * c[q], '-', lw=1.2, label=run.runId)
+                ax.semilogx(c.cycle, 100 * total(c, q), '-', lw=1.2, label=run.runId)
         ax.set_xlabel('cycles N')
         ax.set_ylabel('%s [%%]' % q)
         plainLogTicks(ax)

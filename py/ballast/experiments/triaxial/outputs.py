@@ -28,15 +28,25 @@ from ...runfiles import plainLogTicks, saveFigure, strictJson, writeAtomic
 from .. import cyclic, grains
 from ..vtk import dataArray, unstructuredGrid, writeContactsVtu, writePvd
 from ..breakage import engines, massLost
+from ...settlementlaws import settlementJumped
 from .recorder import Recorder
 
 OWN_COLUMNS = ('axialStrain', 'volumetricStrain', 'resilientStrain', 'resilientModulus', 'qGrainsMin', 'qGrainsMax')
 
 
+STRAINS = ('axialStrain', 'volumetricStrain')   # permanent strains: with cycle jumping, extrapolated as the settlement
+
+
 def cycleTable(exp):
-    """cycles.csv as a DataFrame (the shared schema, then OWN_COLUMNS)."""
-    return cyclic.table([dict(zip(Recorder.CYCLE_COLUMNS, row)) for row in exp.recorder.cycles], OWN_COLUMNS,
-                        exp.jumper, exp.stepChoice)
+    """cycles.csv as a DataFrame (the shared schema, then OWN_COLUMNS; with cycle jumping then axialStrainJumped and
+    volumetricStrainJumped, each strain's extrapolation over the jumped cycles as settlementJumped's: b ln(N / n),
+    b of its log law fitted to the simulated cycles without the steps of those that changed the bed)."""
+    frame = cyclic.table([dict(zip(Recorder.CYCLE_COLUMNS, row)) for row in exp.recorder.cycles], OWN_COLUMNS,
+                         exp.jumper, exp.stepChoice)
+    if exp.jumper is not None:
+        for q in STRAINS:
+            frame[q + 'Jumped'] = settlementJumped(frame.cycle, frame[q], cyclic.changed(frame))
+    return frame
 
 
 def writeCycles(exp):
@@ -131,6 +141,9 @@ def figure(cycles, path, references=()):
     N = cycles.cycle.to_numpy()
     for ax, kind, column in ((axes[0], 'axial', 'axialStrain'), (axes[1], 'volumetric', 'volumetricStrain')):
         ax.semilogx(N, 100 * cycles[column].to_numpy(), 'o-', ms=3, label='simulated')
+        if column + 'Jumped' in cycles and cycles[column + 'Jumped'].any():   # cycle jumping: the total
+            ax.semilogx(N, 100 * (cycles[column] + cycles[column + 'Jumped']).to_numpy(), 'x:', ms=3,
+                        label='with the jumped cycles extrapolated')
         for k, (refKind, Nr, er) in enumerate(r for r in references if r[0] == kind):
             ax.semilogx(Nr, 100 * er, 's--', ms=3, color='k', label='measured' if k == 0 else None)
         ax.set_ylabel('%s strain [%%]%s' % (kind, ' (compression +)' if kind == 'volumetric' else ''))
