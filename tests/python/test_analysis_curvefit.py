@@ -78,6 +78,11 @@ def test_a_jumped_run_is_compared_with_its_extrapolated_strain(tmp_path):
     frame = curvefit.table([root], {'axialStrain': path}, [1, 100]).set_index('cycle')
     assert frame.simulated[100] == pytest.approx(0.02, rel=1e-12) and frame.difference[100] == pytest.approx(-0.01)
     assert frame.simulated[1] == pytest.approx(0.01, rel=1e-12)
+    # records of before the column: the extrapolation made here by the same law, b ln(N / n) over the simulated rows
+    c = pd.DataFrame({'cycle': [1, 2, 3, 4, 5, 20], 'jumped': [0, 0, 0, 0, 0, 14], 'crushes': 0, 'abrasions': 0,
+                      'axialStrain': 0.01 + 0.002 * np.log(np.arange(1, 7))})
+    assert curvefit.total(c, 'axialStrain')[-1] == pytest.approx(0.01 + 0.002 * math.log(6) + 0.002 * math.log(20 / 6),
+                                                                 rel=1e-9)
 
 
 def test_the_script_writes_its_files_and_refuses_what_it_cannot_read(tmp_path):

@@ -13,6 +13,7 @@ import numpy as np
 import pandas as pd
 
 from ..experiments.triaxial.strains import atCycles, readReference
+from ..settlementlaws import bedChanged, settlementJumped
 from .settlement import realizationRuns
 
 
@@ -31,7 +32,12 @@ def total(cycles, q):
     over the jumped cycles (<q>Jumped, as the triaxial test writes for its strains), what a measured curve at that
     cycle count compares with."""
     v = cycles[q].to_numpy(float)
-    return v + cycles[q + 'Jumped'].to_numpy(float) if q + 'Jumped' in cycles else v
+    if q + 'Jumped' in cycles:
+        return v + cycles[q + 'Jumped'].to_numpy(float)
+    if 'jumped' in cycles and cycles.jumped.any():   # records of before those columns: the same law, here
+        changed = bedChanged(cycles.crushes.to_numpy(), cycles.abrasions.to_numpy())
+        return v + settlementJumped(cycles.cycle, v, changed)
+    return v
 
 
 def measured(curves, at):
