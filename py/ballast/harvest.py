@@ -80,10 +80,14 @@ class GrainTable:
         for i in newIds:
             _material(self.sphereMaterials, O.bodies[int(i)].material)
 
-    def resized(self, bid, radius):
-        """Grain bid (one sphere) now of radius [m]."""
+    def resized(self, bid, radius, sphere=None, sphereRadius=None):
+        """Grain bid now of r_eq radius [m]; the sphere body whose radius changed, sphere (default: the grain, one
+        sphere, then of radius), now of sphereRadius [m] (a worn clump member: the clump body keeps 0)."""
         self.radii[self.ids == bid] = radius
-        self.radiusById[bid] = radius
+        if sphere is None:
+            self.radiusById[bid] = radius
+        else:
+            self.radiusById[sphere] = sphereRadius
 
     def commit(self):
         """Call after the engine's own changes: the table is current again, the step's caches not."""

@@ -55,6 +55,18 @@ def resizeGrain(tab, bid, factor):
     return rs
 
 
+def abradeUnit(tab, unitId, grainId, factor):
+    """Abrasion unit unitId of grain grainId abraded by factor [-] (section 3) by the kind (GrainKind.abrade: a
+    sphere grain as resizeGrain; a clump's member worn, docs/grains.md), then the grain table: the grain's r_eq and
+    the unit's own radius. Returns the kind's Resized."""
+    rs = tab.kind.abrade(unitId, factor)
+    if unitId == grainId:
+        tab.resized(grainId, rs.radiusAfter)
+    else:
+        tab.resized(grainId, rs.radiusAfter, unitId, O.bodies[unitId].shape.radius)
+    return rs
+
+
 class BallastEngine(runtime.Runner):
     """Parameters `_params` ({name: Param}), outputs `_outputs` ({name: (initial value, doc)}); subclasses
     give `_check(tab, ids, radii)` -> whether the scene changed, and `_summary()`."""

@@ -16,7 +16,9 @@ The interface (:class:`GrainKind`) answers, for the grains of the current scene:
   and a cheap C++ signature that changes whenever a grain is added, erased or resized (ballast.harvest
   caches on it);
 * the changes the engines make: :meth:`~GrainKind.crush` (a crushed grain: by default erased and
-  replaced by sphere fragments, :meth:`~GrainKind.replace`; a clump splits into pieces: :class:`Replaced`) and :meth:`~GrainKind.resize` (abraded or grown: :class:`Resized`), and
+  replaced by sphere fragments, :meth:`~GrainKind.replace`; a clump splits into pieces: :class:`Replaced`),
+  :meth:`~GrainKind.resize` (grown or shrunk whole: :class:`Resized`), :meth:`~GrainKind.abrade` (a surface
+  layer lost where eq. 7's pressure is: the grain, or a clump's member; :meth:`~GrainKind.abrasionUnits`), and
   :meth:`~GrainKind.grainOf`, the grain a contact's body belongs to.
 
 Which kind a scene holds. :func:`current` is the default kind, 'sphere', unless :func:`use` chose
@@ -43,8 +45,11 @@ DEFAULT = 'sphere'
 # nothing to regrow), and for a split clump a dict of what the split did (None otherwise).
 Replaced = namedtuple('Replaced', 'ids radii mask volumeBefore volumeAfter massBefore massAfter volumeRatio split',
                       defaults=(None,))
-# What resize() did: r_eq before and after [m], the volume before [m^3], the mass before and after [kg].
-Resized = namedtuple('Resized', 'radiusBefore radiusAfter volumeBefore massBefore massAfter')
+# What resize() or abrade() did: r_eq before and after [m], the volume before [m^3], the mass before and after [kg],
+# and the volume after [m^3] when the grain was not scaled whole (a worn clump member), None when it was (then it is
+# the volume before times factor^3).
+Resized = namedtuple('Resized', 'radiusBefore radiusAfter volumeBefore massBefore massAfter volumeAfter',
+                     defaults=(None,))
 
 
 class GrainKind:
@@ -136,6 +141,23 @@ class GrainKind:
         """Grain bid scaled by factor [-] about its centre at its density, its contacts as YADE would make
         them at the new size (ballast.contacts). Returns :class:`Resized`."""
         raise NotImplementedError
+
+    # Abrasion (section 3, eqs. 6-7) is decided per abrasion unit, a sphere whose contacts eq. 7 reads and that
+    # loses the surface layer: by default the grain itself (the sphere kind's, unchanged); a clump's are its
+    # members, so a corner wears where its pressure is (docs/grains.md, "Corner wear of a clump").
+    def abrasionUnits(self, ids, radii, radiusById):
+        """(unit ids, their radii [m] (rMin is compared with them), the grain id of each unit) for the grains ids of
+        r_eq radii [m]; radiusById: every body's sphere radius [m] (the grain table's). Default: the grains."""
+        return ids, radii, ids
+
+    def unitOf(self, bodyIds):
+        """The abrasion unit each body of a contact belongs to (int64 array of bodyIds' shape). Default: its grain."""
+        return self.grainOf(bodyIds)
+
+    def abrade(self, unitId, factor):
+        """Unit unitId abraded: its radius times factor [-]; returns :class:`Resized` of its grain. Default: the
+        grain resized whole (:meth:`resize`)."""
+        return self.resize(unitId, factor)
 
 
 _kinds = {}
