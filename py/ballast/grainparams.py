@@ -19,11 +19,11 @@ def ratio(v):
 
 # Defaults: choices (a moderately elongated and flat grain), see clumpshapes' doc
 CLUMP_SHAPE = {
-    'clumpElongation': Param(0.7, '-', "with grain 'clump': the grains' elongation I/L (intermediate over long axis, "
-                             'as EN 933-4 reads a grain; docs/grains.md); clumpElongation clumpFlatness > 1/3 (the tips '
-                             'reach the core)', ratio, 'a number in (0, 1]'),
-    'clumpFlatness': Param(0.6, '-', "with grain 'clump': the grains' flatness S/I (short over intermediate axis, as "
-                           'EN 933-3 reads a grain)', ratio, 'a number in (0, 1]'),
+    'clumpElongation': Param(0.7, '-', "with grain 'clump': the grains' elongation I/L (intermediate over long axis; "
+                             'docs/grains.md); clumpElongation clumpFlatness > 1/3 (the tips reach the core)', ratio,
+                             'a number in (0, 1]'),
+    'clumpFlatness': Param(0.6, '-', "with grain 'clump': the grains' flatness S/I (short over intermediate axis)",
+                           ratio, 'a number in (0, 1]'),
     'clumpSpheres': Param(8, '-', "with grain 'clump': spheres in each grain (a core, four tips and random ones; the "
                           'CPU per grain-step follows their number)', intBetween(MIN_SPHERES, MAX_SPHERES),
                           'an integer in [%d, %d]' % (MIN_SPHERES, MAX_SPHERES)),

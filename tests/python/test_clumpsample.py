@@ -1,5 +1,5 @@
-"""ballast.experiments.clumpsample, the clump grains of a sample (issue 47, item 1): a small oedometer packing built with
-grain 'clump' is all clumps, each of mass density x its stored union volume (docs/grains.md: within 1 %), of r_eq the
+"""ballast.experiments.clumpsample, the clump grains of a sample (issue 47, item 1): a small oedometer packing built
+with grain 'clump' is all clumps, each of mass density x its stored union volume (docs/grains.md: within 1 %), of r_eq the
 cloud's radius (1e-12), and the stored sample rebuilds the same clumps: members where the stored template,
 orientation, centre and r put them, worked out here with the quaternion by hand (1e-12), and the rows the scene gives
 back equal to the stored ones (1e-12)."""

@@ -13,9 +13,10 @@ The grains stand in a row, a pitch of 1.5 dMax apart: their platens never meet a
 touches another. With grain 'clump' each grain is a clump of volume-equivalent diameter d (a template of
 :mod:`..clumpsample`) lying on its flat side, its short axis vertical and turned about it at random from the seed
 (as a grain is laid between platens: turned at random, a clump touching each platen at one member rolls out
-between frictionless platens), its platens at its lowest and highest points and wide enough for it, the pitch 1.5 times the largest clump's circumscribed diameter; d stays the grain's size in
-every output (F/d^2, the strain). Once a grain has crushed its fragments and platens are removed, so the first crush
-is the only one. Gravity is off (a grain's weight is 1e-5 of its crushing force).
+between frictionless platens), its platens at its lowest and highest points and wide enough for it, the pitch
+1.5 times the largest clump's circumscribed diameter; d stays the grain's size in every output (F/d^2, the
+strain). Once a grain has crushed its fragments and platens are removed, so the first crush is the only one.
+Gravity is off (a grain's weight is 1e-5 of its crushing force).
 """
 import math
 
