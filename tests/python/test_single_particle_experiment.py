@@ -142,3 +142,21 @@ def test_density_scaling_and_the_stiffness_step_exclude_each_other():
     from ballast.params import ParamError
     with pytest.raises(ParamError, match='density scaling sets the step itself'):
         SingleParticle(diameters=SIZES, timeStep='stiffness', densityStep=1e-5)
+
+
+def test_a_clump_between_the_platens_crushes_and_splits(tmp_path):
+    """grain 'clump': one grain of r_eq 15 mm on its flat side, ft0 small; it crushes and the clump splits into pieces
+    of its members (the crush engine's event: two planes under the platens' uniaxial load, 2 to 4 pieces)."""
+    from yade import O
+    from ballast.engines import BallastCrushEngine
+    test = SingleParticle(grain='clump', clumpTemplates=2, diameters=[0.03], ft0=3e5, m=0.5, speed=0.002,
+                          results=str(tmp_path), progress=60)
+    s = test.run()
+    t = test.table()
+    assert s['nCrushed'] == 1 and t.crushed.all() and t.diameter.tolist() == [0.03]
+    # the force is what the clump carried: both platens the same to the grain's inertia, F/d^2 from d = 2 r_eq
+    assert t.force[0] > 0 and abs(t.forceBottom[0] / t.force[0] - 1) < 0.05
+    assert t.forceOverD2[0] == pytest.approx(t.force[0] / 0.03 ** 2, rel=1e-12)
+    e = next(e for e in O.engines if isinstance(e, BallastCrushEngine)).events[0]
+    assert e['id'] == test.tester.grain[0] and 2 <= len(e['newIds']) <= 4
+    assert e['strength'] == pytest.approx(3e5 / 0.015 ** 0.5, rel=1e-12)   # f_t0 / r_eq^m with r_eq the clump's

@@ -32,7 +32,7 @@ import time
 
 from yade import O
 
-from .. import runtime
+from .. import grainkinds, runtime
 from ..engines import BallastAbrasionEngine, BallastCrushEngine
 from ..names import runDirName
 from ..engineparams import CRUSH
@@ -77,9 +77,11 @@ class Experiment:
                 runtime.register(obj)
 
     def newScene(self):
-        """O.reset() for a piece that builds a scene; the experiment lives in the new one."""
+        """O.reset() for a piece that builds a scene; the experiment lives in the new one, with the grain kind of its
+        `grain` parameter chosen before any grain exists (the sphere, the default, leaves the scene as before)."""
         O.reset()
         self.adopt()
+        grainkinds.use(self.p.get('grain', grainkinds.DEFAULT))
 
     @property
     def runId(self):

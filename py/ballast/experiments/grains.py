@@ -5,7 +5,7 @@ ends, per chunk and at the end only."""
 import math
 
 import numpy as np
-from yade import utils
+from yade import O, utils
 
 from .. import grainkinds
 
@@ -23,6 +23,12 @@ def bodies():
 def spheres():
     """The grains (yade Bodies): the name of the time when a grain was always a sphere; see bodies()."""
     return bodies()
+
+
+def erase(ids):
+    """The grains ids taken out of the scene, a clump with its members (YADE's erase leaves them free)."""
+    for i in ids:
+        O.bodies.erase(i, O.bodies[i].isClump)
 
 
 def arrays():

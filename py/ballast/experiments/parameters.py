@@ -12,6 +12,7 @@ import math
 import os
 
 from ..engineparams import ABRASION, CRUSH
+from ..grainparams import CLUMP_SHAPE
 from ..params import (INT32_MAX, NUMBER_NONNEGATIVE, NUMBER_POSITIVE, Param, Parameters, anyText, between, boolean, choice,
                       coreRange, flag, intBetween, nonNegative, positive, positiveInt, text)
 
@@ -41,6 +42,27 @@ GRAINS = {
     'friction': Param(0.8, 'rad', 'ballast friction angle', between(0, math.pi / 2), PHI),
     'density': Param(2600., 'kg/m^3', 'ballast density', positive, NUMBER_POSITIVE),
 }
+
+# what a grain is (issue 47, docs/grains.md "Clumps in the experiments"): the paper's sphere or a clump of spheres
+GRAIN_KIND = 'sphere'   # the default, the paper's: its samples' store keys hold no entry of GRAIN
+GRAIN = {
+    'grain': Param(GRAIN_KIND, '-', "what a grain is: 'sphere' (one YADE sphere, the paper's) or 'clump' (a YADE clump "
+                   'of overlapping spheres shaped by the clump parameters, its volume-equivalent radius the cloud\'s '
+                   'radius; crushed, it splits); the same preparation and outputs', choice('sphere', 'clump'),
+                   "'sphere' or 'clump'", text),
+    **CLUMP_SHAPE,
+    'clumpTemplates': Param(20, '-', "with grain 'clump': clump shapes built from the seed for a sample, each grain one "
+                            'of them scaled to its radius and turned at random (a shape costs about 1 s to build: its '
+                            'union volume by Monte Carlo)', intBetween(1, 1000), 'an integer in [1, 1000]'),
+}
+GRAIN_SHAPE_KEYS = tuple(k for k in GRAIN if k != 'grain')
+
+
+def grainKey(p):
+    """What of GRAIN decides a stored sample, for its store key: nothing for the paper's spheres (their stored
+    samples keep their names), else the kind and its shape parameters."""
+    return {} if p['grain'] == GRAIN_KIND else {k: p[k] for k in GRAIN}
+
 
 # the steel of the walls, plates and platens (section 4)
 STEEL = {
@@ -225,6 +247,17 @@ class ExperimentParameters(Parameters):
     def checkSizes(self):
         if self['dMin'] >= self['dMax']:
             self.bad('dMin', 'must be smaller than dMax = %g' % self['dMax'])
+
+    def checkGrain(self):
+        """The clump parameters only with grain 'clump' (elsewhere a value set would be lost), and a clump whose tips
+        reach its core (clumpshapes: clumpElongation clumpFlatness > 1/3)."""
+        if self['grain'] != 'clump':
+            for k in GRAIN_SHAPE_KEYS:
+                if self[k] != GRAIN[k].default:
+                    self.bad(k, "is used only with grain = 'clump' (got grain = %r)" % self['grain'])
+        elif self['clumpElongation'] * self['clumpFlatness'] <= 1 / 3:
+            self.bad('clumpFlatness', 'with clumpElongation = %g the grain\'s tips do not reach its core: '
+                     'clumpElongation clumpFlatness must exceed 1/3' % self['clumpElongation'])
 
     def checkBed(self):
         """A bed prepared soft and crushed down to rMin: rMin <= dMax/2, prepYoung <= young, rolling resistance

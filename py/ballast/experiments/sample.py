@@ -8,7 +8,9 @@ pressed): ``experiments/oedometer/packing.py``, ``experiments/box/bed.py``.
 
 The container's shape enters the cloud only, through :class:`CylinderShape` and :class:`BoxShape`
 (where the cloud is made, how many grains to ask of makeCloud); the container's bodies are
-:mod:`.containers`. Grains are placed and stored as spheres [x, y, z, r] (the paper's grain)."""
+:mod:`.containers`. Grains are placed and stored as spheres [x, y, z, r] (the paper's grain), or with grain 'clump'
+as clumps of volume-equivalent radius r (:mod:`.clumpsample`: the templates and each clump's template, orientation,
+centre and r are stored besides)."""
 import json
 import math
 import os
@@ -20,6 +22,7 @@ from yade import O, Vector3, pack, utils
 from ..geometry import meanCubedDiameterVolume, sphereVolume
 from ..runfiles import writeAtomic
 from . import grains, preparation
+from .clumpsample import ClumpSample
 from .scene import GRAIN_MASK, STEEL_MASK, engines, rolling
 
 CLOUD_SOLID = 0.3            # [-] solid fraction of a falling cloud: grains fall freely
@@ -86,8 +89,23 @@ def cloud(shape, dMin, dMax, vSolid, seed, zBottom=0.0):
     return np.column_stack([x[:n], y[:n], z[:n]]), r[:n], float(np.max(z[:n] + r[:n]))
 
 
-def place(centres, radii, material):
-    """The grains appended to the scene, in the order given (their ids follow it)."""
+def grainCloud(p, shape, vSolid, seed, zBottom=0.0):
+    """cloud() of p's grains; with grain 'clump' a cloud of their circumscribed spheres (the templates' reach times
+    the sizes, the volume in proportion) whose radii are then the clumps' r_eq: clumps are placed without overlap,
+    off the walls."""
+    if p['grain'] != 'clump':
+        return cloud(shape, p['dMin'], p['dMax'], vSolid, seed, zBottom)
+    f = ClumpSample.ofScene(p).reach()
+    x, r, top = cloud(shape, f * p['dMin'], f * p['dMax'], f ** 3 * vSolid, seed, zBottom)
+    return x, r / f, top
+
+
+def place(centres, radii, material, p=None, seed=0):
+    """The grains appended to the scene, in the order given (their ids follow it): spheres, or with p['grain'] 'clump'
+    clumps of the scene's templates (built from p on first need) turned at random from seed."""
+    if p is not None and p['grain'] == 'clump':
+        ClumpSample.ofScene(p).place(centres, radii, material, seed)
+        return
     for c, r in zip(centres, radii):
         O.bodies.append(utils.sphere(tuple(float(v) for v in c), float(r), material=material, mask=GRAIN_MASK))
 
@@ -123,9 +141,9 @@ def layers(exp, shape, area, depth, ballast, pressLayer, toHeight=None):
     Returns the last top."""
     p, top = exp.p, 0.0
     for k in range(p['layers']):
-        pos, rad, cloudTop = cloud(shape, p['dMin'], p['dMax'], p['solidFraction'] * area * depth / p['layers'],
-                                   p['seed'] * 100 + k, top)
-        place(pos, rad, ballast)
+        pos, rad, cloudTop = grainCloud(p, shape, p['solidFraction'] * area * depth / p['layers'], p['seed'] * 100 + k,
+                                        top)
+        place(pos, rad, ballast, p, p['seed'] * 100 + k)
         if k == 0:
             O.dt = preparation.PREP_DT_SAFETY * utils.PWaveTimeStep()
         tFall = math.sqrt(2 * (cloudTop - top) / 9.81)
@@ -194,12 +212,16 @@ def pressLayer(exp, steel, mass, force):
 # ---------------------------------------------------------------------------- the store
 def store(path, key, exp, **extra):
     """The grains of the scene saved to `path` (JSON, written atomically: concurrent runs of the same key never
-    see half a file) with the key that decides them, who made them and `extra` (what the experiment needs back)."""
+    see half a file) with the key that decides them, who made them and `extra` (what the experiment needs back).
+    Clump grains: their centres of mass and r_eq, and what rebuilds them (ClumpSample.document)."""
     x, r = grains.arrays()[:2]
     os.makedirs(os.path.dirname(path) or '.', exist_ok=True)
     doc = dict({'key': key, 'created': time.strftime('%Y-%m-%dT%H:%M:%S'), 'runId': exp.runId,
                 'steps': dict(exp.phases.steps), 'wallSeconds': dict(exp.phases.wall)}, **extra)
     doc['grains'] = [[repr(float(v)) for v in (xi[0], xi[1], xi[2], ri)] for xi, ri in zip(x, r)]
+    clumps = ClumpSample.current() if grains.kind().name == 'clump' else None
+    if clumps is not None:
+        doc.update(clumps.document())
     writeAtomic(path, json.dumps(doc))
     return len(r)
 
@@ -224,7 +246,10 @@ def reload(exp, doc, ballast, damping, settleTime=0.01):
     overlaps, only their shear and rolling history is lost."""
     p = exp.p
     O.engines = engines(damping, p['law'], rolling(p))
-    g = np.array([[float(v) for v in row] for row in doc['grains']]).reshape(-1, 4)
-    place(g[:, :3], g[:, 3], ballast)
+    if 'clumps' in doc:   # the scene's kind is the sample's (the key holds grain)
+        ClumpSample.fromDocument(doc).rebuild(doc, ballast)
+    else:
+        g = np.array([[float(v) for v in row] for row in doc['grains']]).reshape(-1, 4)
+        place(g[:, :3], g[:, 3], ballast)
     O.dt = p['dtSafety'] * utils.PWaveTimeStep()
     exp.phases.run('settle', lambda: grains.unbalanced() < 0.01, tEnd=O.time + settleTime, checkEvery=100)

@@ -26,12 +26,14 @@ import math
 
 import numpy as np
 
-ELONGATION = 0.7
-FLATNESS = 0.6
-N_SPHERES = 8
+from ..grainparams import CLUMP_SHAPE, MAX_SPHERES, MIN_SPHERES
+
+# the defaults are the experiments' declarations (ballast.grainparams), declared once
+ELONGATION = CLUMP_SHAPE['clumpElongation'].default
+FLATNESS = CLUMP_SHAPE['clumpFlatness'].default
+N_SPHERES = CLUMP_SHAPE['clumpSpheres'].default
 SAMPLES = 400000
 SHELL_SAMPLES = 20000   # shellOutside: about 1 % on a worn member's loss for p > 0.3
-MIN_SPHERES, MAX_SPHERES = 5, 200
 _RADIUS_SPREAD = 0.6      # extra members' radii in [0.6 S, S]
 _TRIES = 10000            # candidate centres per extra member before giving up
 

@@ -7,13 +7,13 @@ import math
 import os
 
 import numpy as np
-from yade import O, Vector3, pack, utils
+from yade import O, Vector3, pack
 
 from ... import runtime
 from ...geometry import meanCubedDiameterVolume, sphereVolume
 from .. import grains, preparation, sample
 from ..containers import boxWalls
-from ..scene import GRAIN_MASK, engines, materials, rolling
+from ..scene import engines, materials, rolling
 from .parameters import bedKey
 
 PLATE_THICKNESS = 0.02       # [m] the press plate's mass: steel of this thickness over the box
@@ -77,8 +77,7 @@ def buildBed(exp):
     top = sample.layers(exp, sample.BoxShape(p['boxLength'], p['boxWidth']), area, p['bedDepth'], ballast,
                         lambda force: press(exp, rig, force))
     escaped = [b.id for b in grains.spheres() if not inside(p, b.state.pos)]
-    for i in escaped:
-        O.bodies.erase(i)
+    grains.erase(escaped)
     preparation.restoreFriction(ballast, p['friction'], p['steelFriction'])
     preparation.Stiffener().run(exp, [(ballast, p['young']), (steel, p['steelYoungRatio'] * p['young'])],
                                 p['young'] / p['prepYoung'])
@@ -109,7 +108,8 @@ def crib(exp, zBase):
     held = sleeper.state.blockedDOFs
     sleeper.state.blockedDOFs = 'xyzXYZ'
     sleeper.state.vel = Vector3(0, 0, 0)
-    rMax, gap = p['dMax'] / 2, 0.05 * p['dMin']
+    f = sample.ClumpSample.ofScene(p).reach() if p['grain'] == 'clump' else 1.0   # a cloud of circumscribed spheres
+    rMax, gap = f * p['dMax'] / 2, 0.05 * p['dMin']
     w, L, W = p['sleeperWidth'], p['boxLength'], p['boxWidth']
     side = L / 2 - w / 2                       # each crib's length along x
     top = zBase + p['cribDepth'] + p['dMax']   # the cloud starts above the crib's final top
@@ -117,28 +117,31 @@ def crib(exp, zBase):
     for sign in (-1, 1):
         x0, x1 = sorted((sign * (w / 2 + rMax + gap), sign * (L / 2 - rMax - gap)))
         vSolid = p['solidFraction'] * side * W * p['cribDepth']
-        h = 1.5 * vSolid / (sample.CLOUD_SOLID * (x1 - x0) * (W - 2 * (rMax + gap)))
+        h = 1.5 * vSolid * f ** 3 / (sample.CLOUD_SOLID * (x1 - x0) * (W - 2 * (rMax + gap)))
         sp = pack.SpherePack()
-        sp.makeCloud((x0, -W / 2 + rMax + gap, top), (x1, W / 2 - rMax - gap, top + h), rMean=(p['dMin'] + p['dMax']) / 4,
+        sp.makeCloud((x0, -W / 2 + rMax + gap, top), (x1, W / 2 - rMax - gap, top + h), rMean=f * (p['dMin'] + p['dMax']) / 4,
                      rRelFuzz=(p['dMax'] - p['dMin']) / (p['dMax'] + p['dMin']),
                      num=int(math.ceil(1.5 * vSolid / meanCubedDiameterVolume(p['dMin'], p['dMax']))),
                      seed=p['seed'] * 100 + 50 + (sign > 0))
         kept = sorted((c[2], c[0], c[1], r) for c, r in sp)
-        vol = 0.0
-        for z, x, y, r in kept:
+        centres, radii, vol = [], [], 0.0
+        for z, x, y, rc in kept:
+            r = rc / f
             if vol >= vSolid:
                 break
-            O.bodies.append(utils.sphere((x, y, z), r, material=exp.rig.ballast, mask=GRAIN_MASK))
+            centres.append((x, y, z))
+            radii.append(r)
             vol += float(sphereVolume(r))
-            n += 1
+        sample.place(centres, radii, exp.rig.ballast, p, p['seed'] * 100 + 50 + (sign > 0))
+        n += len(radii)
     tFall = math.sqrt(2 * (top + h - zBase) / 9.81)
     exp.phases.say('crib: %d grains tipped beside the sleeper, %.3f m deep' % (n, p['cribDepth']))
     exp.phases.run('crib', tEnd=O.time + tFall, simSpan=tFall, simStart=O.time, extra=grains.restInfo)
     # the grains that came to rest on the sleeper are swept off, as a crib is levelled
     zTop = sleeper.state.pos[2] + sleeper.shape.extents[2]
-    swept = [b.id for b in grains.spheres() if abs(b.state.pos[0]) <= w / 2 + b.shape.radius and b.state.pos[2] > zTop]
-    for i in swept:
-        O.bodies.erase(i)
+    x, r, _ = grains.arrays()
+    swept = grains.kind().ids()[(np.abs(x[:, 0]) <= w / 2 + r) & (x[:, 2] > zTop)].tolist()
+    grains.erase(swept)
     exp.phases.run('crib', lambda: grains.unbalanced() < 0.05, tEnd=O.time + 0.05, extra=grains.restInfo)
     sleeper.state.blockedDOFs = held
     return n - len(swept)

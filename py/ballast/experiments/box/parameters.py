@@ -10,8 +10,8 @@ import os
 
 from ...params import NUMBER_NONNEGATIVE, NUMBER_POSITIVE, Param, anyText, between, boolean, flag, intBetween, nonNegative, \
     positive, positiveInt, text
-from ..parameters import (CONTACT, CONTINUE_FROM, CYCLE_JUMP, ENGINES, GRAINS, INTEGRATION, PHI, PREPARATION, RUN, SEED,
-                          STEEL, CYCLE_OUTPUTS, QUASI_STATIC, ExperimentParameters, take)
+from ..parameters import (CONTACT, CONTINUE_FROM, CYCLE_JUMP, ENGINES, GRAIN, GRAINS, INTEGRATION, PHI, PREPARATION,
+                          RUN, SEED, STEEL, CYCLE_OUTPUTS, QUASI_STATIC, ExperimentParameters, grainKey, take)
 from ..loadhistory import LoadHistory
 
 OWNER = 'BoxTest'
@@ -67,6 +67,7 @@ PARAMS = {
                     'it saved (saveEvery), in its folder, to the end it was going to; with no such run, start afresh '
                     '(docs/box.md, "A killed run goes on")', boolean, '0 or 1', flag),
     **GRAINS,
+    **GRAIN,
     **take(STEEL, 'steelYoungRatio', 'steelPoisson', 'steelDensity'),
     **take(CONTACT, 'law', 'rollingStiffness'),
     **PREPARATION,
@@ -88,7 +89,7 @@ BED_VERSION = 1
 
 def bedKey(p):
     """(the values that decide the bed, the file name it is stored under)."""
-    d = dict({k: p[k] for k in BED_KEYS}, version=BED_VERSION)
+    d = dict({k: p[k] for k in BED_KEYS}, version=BED_VERSION, **grainKey(p))   # sphere beds keep their names
     h = hashlib.sha1(json.dumps(d, sort_keys=True).encode()).hexdigest()[:10]
     return d, 'bed-seed%d-%s.json' % (p['seed'], h)
 
@@ -115,6 +116,7 @@ class BoxParameters(ExperimentParameters):
     def crossCheck(self):
         """Checks between parameters; each error names the parameter at fault."""
         p, bad = self, self.bad
+        self.checkGrain()
         self.checkSizes()
         self.checkBed()
         if p['bedDepth'] < 2 * p['dMax']:

@@ -69,13 +69,13 @@ class StoredPacking:
         ballast.frictionAngle = p['depFriction']
         self.rig = Rig(None, ballast, steel)
         Rin = p['diameter'] / 2
-        pos, rad, top = sample.cloud(sample.CylinderShape(Rin), p['dMin'], p['dMax'], p['fill'] * math.pi * Rin ** 2 * p['height'],
-                                     p['seed'])
+        pos, rad, top = sample.grainCloud(p, sample.CylinderShape(Rin), p['fill'] * math.pi * Rin ** 2 * p['height'],
+                                          p['seed'])
         # while the cloud falls the wall reaches above it, or grains bounce out over the rim
         self.rig.cylinder = Cylinder(p, steel, max(p['height'], top + p['dMax']))
         O.engines = engines(p['prepDamping'], p['law'], rolling(p)) + [
             runtime.callback(self, 'shake', iterPeriod=10, dead=True, label='oedoShaker')]
-        sample.place(pos, rad, self.rig.ballast)
+        sample.place(pos, rad, self.rig.ballast, p, p['seed'])
         O.dt = preparation.PREP_DT_SAFETY * utils.PWaveTimeStep()
         exp.phases.say('deposit: %d grains (%.1f %% of the cylinder) falling from up to %.3f m, friction %g rad '
                        '(E = %.3g Pa while preparing, dt = %.2e s)' % (len(rad), 100 * p['fill'], top,
@@ -84,8 +84,7 @@ class StoredPacking:
         sample.deposit(exp, tDep)
         out = [b.id for b in grains.spheres() if math.hypot(b.state.pos[0], b.state.pos[1]) > self.rig.cylinder.Rv
                or b.state.pos[2] < 0]
-        for i in out:
-            O.bodies.erase(i)
+        grains.erase(out)
         self.escaped = len(out)
         self.vibrate(exp)
         self.press(exp)

@@ -15,8 +15,8 @@ from ... import _ballast
 from ...geometry import frictPhysStiffness
 from ...params import NUMBER_NONNEGATIVE, NUMBER_POSITIVE, Param, anyText, between, boolean, choice, flag, intAtLeast, \
     nonNegative, positive, positiveInt, text
-from ..parameters import (CONTACT, CYCLE_JUMP, ENGINES, GRAINS, INTEGRATION, PREPARATION, RUN, SEED, STEEL,
-                          CYCLE_OUTPUTS, MAX_OVERLAP_RATIO, QUASI_STATIC, ExperimentParameters, take)
+from ..parameters import (CONTACT, CYCLE_JUMP, ENGINES, GRAIN, GRAINS, INTEGRATION, PREPARATION, RUN, SEED, STEEL,
+                          CYCLE_OUTPUTS, MAX_OVERLAP_RATIO, QUASI_STATIC, ExperimentParameters, grainKey, take)
 from .loadcurve import halfLoadTime, peakTime
 
 OWNER = 'Oedometer'
@@ -31,6 +31,7 @@ PARAMS = {
                       'an integer >= 12'),
     # materials (section 4)
     **take(GRAINS, 'young', 'poisson', 'friction', 'density'),
+    **GRAIN,
     **STEEL,
     **CONTACT,
     # preparation: deposition and vibration
@@ -139,6 +140,7 @@ class OedometerParameters(ExperimentParameters):
         """Checks between parameters; each error names the parameter at fault."""
         p, bad = self, self.bad
         self.checkSizes()
+        self.checkGrain()
         self.checkBed()
         self.checkDensityStep()
         self.checkCycleJump()
@@ -169,5 +171,6 @@ def packingKey(p):
         if p['rollingFriction'] > 0:
             d[k] = p[k]
     d['version'] = PACKING_VERSION
+    d.update(grainKey(p))   # nothing for spheres: their stored packings keep their names
     h = hashlib.sha1(json.dumps(d, sort_keys=True).encode()).hexdigest()[:10]
     return d, 'packing-seed%d-%s.json' % (p['seed'], h)

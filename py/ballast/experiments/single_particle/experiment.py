@@ -10,19 +10,25 @@ F-displacement curve; then the Weibull statistics (:mod:`.strengths`).
     test.run()                # prepare() and load(); writes strengths.csv, curves.csv, summary.json, figures
 
 The grains stand in a row, a pitch of 1.5 dMax apart: their platens never meet and a grain never
-touches another. Once a grain has crushed its fragments and platens are removed, so the first crush
-is the only one. Gravity is off (a grain's weight is 1e-5 of its crushing force).
+touches another. With grain 'clump' each grain is a clump of volume-equivalent diameter d (a template of
+:mod:`..clumpsample`) lying on its flat side, its short axis vertical and turned about it at random from the seed
+(as a grain is laid between platens: turned at random, a clump touching each platen at one member rolls out
+between frictionless platens), its platens at its lowest and highest points and wide enough for it, the pitch
+1.5 times the largest clump's circumscribed diameter; d stays the grain's size in every output (F/d^2, the
+strain). Once a grain has crushed its fragments and platens are removed, so the first crush is the only one.
+Gravity is off (a grain's weight is 1e-5 of its crushing force).
 """
 import math
 
 import numpy as np
-from yade import O, utils
+from yade import O, Vector3, utils
 from yade.wrapper import (Bo1_Box_Aabb, Bo1_Sphere_Aabb, ForceResetter, Ig2_Box_Sphere_ScGeom,
                           Ig2_Sphere_Sphere_ScGeom, InsertionSortCollider, InteractionLoop, NewtonIntegrator)
 
 from ... import runtime
 from ...engines import BallastCrushEngine
 from ..base import Experiment
+from ..clumpsample import ClumpSample
 from ..scene import AVOID, GRAIN_MASK, LAWS, STEEL_MASK, materials  # platens pair with grains only (AVOID)
 from . import outputs
 from .parameters import SingleParticleParameters
@@ -69,7 +75,7 @@ class Tester:
     def _remove(self, k, ids):
         for i in list(ids) + [self.top[k], self.bottom[k]]:
             if O.bodies[i] is not None:
-                O.bodies.erase(i)
+                O.bodies.erase(i, O.bodies[i].isClump)   # a clump or a clumped piece with its members
 
     def measure(self):
         self.forces = {k: (O.forces.f(self.top[k])[2], -O.forces.f(self.bottom[k])[2])
@@ -137,13 +143,21 @@ class SingleParticle(Experiment):
                      NewtonIntegrator(damping=p['damping'], gravity=(0, 0, 0))]
         d = self.diameters()
         self.tester = tester = Tester(p['speed'], p['maxStrain'])
-        pitch = PITCH * max(d.max(), p['dMax'])
+        if p['grain'] == 'clump':
+            place, pitch = self.clumps(d, ballast)
+        else:
+            pitch = PITCH * max(d.max(), p['dMax'])
+
+            def place(k, x, dk):   # a sphere on its bottom platen: (its id, its height, its platens' half-width)
+                return O.bodies.append(utils.sphere((x, 0, dk / 2), dk / 2, material=ballast, mask=GRAIN_MASK)), dk, \
+                    PLATEN_HALF * dk
         for k, dk in enumerate(d):
-            x, a, t = k * pitch, PLATEN_HALF * dk, PLATEN_THICKNESS / 2
-            tester.grain.append(O.bodies.append(utils.sphere((x, 0, dk / 2), dk / 2, material=ballast, mask=GRAIN_MASK)))
+            x, t = k * pitch, PLATEN_THICKNESS / 2
+            gid, h, a = place(k, x, dk)
+            tester.grain.append(gid)
             tester.bottom.append(O.bodies.append(utils.box((x, 0, -t), (a, a, t), fixed=True, material=steel,
                                                            mask=STEEL_MASK)))
-            tester.top.append(O.bodies.append(utils.box((x, 0, dk + t), (a, a, t), fixed=True, material=steel,
+            tester.top.append(O.bodies.append(utils.box((x, 0, h + t), (a, a, t), fixed=True, material=steel,
                                                         mask=STEEL_MASK)))
         tester.d, tester.result = [float(x) for x in d], [None] * len(d)
         O.engines = O.engines + [
@@ -158,6 +172,26 @@ class SingleParticle(Experiment):
         self.say('prepared %d grains of %.1f-%.1f mm, platens closing at %g m/s, dt = %.3g s' % (
             len(d), 1e3 * d.min(), 1e3 * d.max(), p['speed'], O.dt))
         return self
+
+    def clumps(self, d, ballast):
+        """With grain 'clump': (place(k, x, d) -> (the clump's id, its height [m], its platens' half-width [m]), the
+        pitch [m]). Grain k: a template drawn from the seed, on its flat side turned at random about z, r_eq d/2, its
+        lowest point on z = 0."""
+        p = self.p
+        shapes = ClumpSample.ofScene(p)
+        ks, qs = shapes.draw(len(d), p['seed'], flat=True)
+        frames = []   # per grain the members' (lowest, highest) [m] about the template's origin, and its reach
+        for k, q, dk in zip(ks, qs, d):
+            C, R, _ = shapes.templates[k]
+            z = np.array([(q * Vector3(*c))[2] for c in C.tolist()]) * dk / 2
+            reach = float(np.max(np.linalg.norm(C, axis=1) + R)) * dk / 2   # circumscribed radius about the origin
+            frames.append((float(np.min(z - R * dk / 2)), float(np.max(z + R * dk / 2)), reach))
+        pitch = PITCH * 2 * max(f[2] for f in frames)
+
+        def place(k, x, dk):
+            lo, hi, reach = frames[k]
+            return shapes.add(ks[k], qs[k], (x, 0, -lo), dk / 2, ballast), hi - lo, max(PLATEN_HALF * dk, reach)
+        return place, pitch
 
     def load(self):
         """Close every pair of platens until its grain crushes (or closes by maxStrain); write the outputs."""

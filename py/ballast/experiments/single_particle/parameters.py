@@ -4,7 +4,7 @@ declarations every experiment shares (:mod:`ballast.experiments.parameters`: the
 steel); the test's own are the sample of grains, the platens' speed and when a grain counts as not
 crushed. Needs no YADE."""
 from ...params import Param, between, intBetween, numberList, positive
-from ..parameters import (CONTACT, DENSITY_STEP, ENGINES, GRAINS, INTEGRATION, RUN, SEED, STEEL, TIME_STEP,
+from ..parameters import (CONTACT, DENSITY_STEP, ENGINES, GRAIN, GRAINS, INTEGRATION, RUN, SEED, STEEL, TIME_STEP,
                           ExperimentParameters, take)
 from .closedform import crushingForce
 
@@ -32,6 +32,7 @@ PARAMS = {
     'densityStep': DENSITY_STEP.withDefault(0.0, DENSITY_STEP.doc + '; the platens move at a set speed (not scaled); '
                                             'inertiaRatioMax says what the heavier grain costs'),
     **GRAINS,
+    **GRAIN,
     **STEEL,
     **take(CONTACT, 'law'),
     **take(INTEGRATION, 'damping', 'dtSafety'),
@@ -60,6 +61,7 @@ class SingleParticleParameters(ExperimentParameters):
     def crossCheck(self):
         p, bad = self, self.bad
         self.checkSizes()
+        self.checkGrain()
         if p['diameters'] and p['n'] != PARAMS['n'].default and p['n'] != len(p['diameters']):
             bad('n', 'given with %d diameters: give one or the other' % len(p['diameters']))
         lo, hi = DIAMETERS

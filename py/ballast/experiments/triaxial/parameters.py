@@ -11,8 +11,8 @@ import os
 
 from ...params import NUMBER_NONNEGATIVE, NUMBER_POSITIVE, Param, anyText, between, boolean, choice, flag, intBetween, \
     nonNegative, positive, positiveInt, text
-from ..parameters import (CONTACT, CONTINUE_FROM, CYCLE_JUMP, CYCLE_OUTPUTS, ENGINES, GRAINS, INTEGRATION, PREPARATION,
-                          QUASI_STATIC, RUN, SEED, STEEL, ExperimentParameters, take)
+from ..parameters import (CONTACT, CONTINUE_FROM, CYCLE_JUMP, CYCLE_OUTPUTS, ENGINES, GRAIN, GRAINS, INTEGRATION,
+                          PREPARATION, QUASI_STATIC, RUN, SEED, STEEL, ExperimentParameters, grainKey, take)
 from ..loadhistory import LoadHistory
 from .strains import CurveError, readReference
 
@@ -82,6 +82,7 @@ PARAMS = {
         "0: none, the paper's spheres", "0: none, the paper's spheres (which roll apart under a deviator); 0.3 by "
         "default here, as in the box test")),
     **GRAINS,
+    **GRAIN,
     **take(STEEL, 'steelYoungRatio', 'steelPoisson', 'steelFriction', 'steelDensity'),
     **take(CONTACT, 'law', 'rollingStiffness'),
     **PREPARATION,
@@ -110,7 +111,7 @@ SPECIMEN_VERSION = 1
 
 def specimenKey(p):
     """(the values that decide the specimen, the file name it is stored under)."""
-    d = dict({k: p[k] for k in SPECIMEN_KEYS}, version=SPECIMEN_VERSION)
+    d = dict({k: p[k] for k in SPECIMEN_KEYS}, version=SPECIMEN_VERSION, **grainKey(p))   # sphere ones keep their names
     if p['compaction'] != 'pressure':   # only then: the specimens stored before the option keep their names
         d['compaction'] = p['compaction']
     h = hashlib.sha1(json.dumps(d, sort_keys=True).encode()).hexdigest()[:10]
@@ -167,6 +168,7 @@ class TriaxialParameters(ExperimentParameters):
     def crossCheck(self):
         """Checks between parameters; each error names the parameter at fault."""
         p, bad = self, self.bad
+        self.checkGrain()
         self.checkSizes()
         self.checkBed()
         if p['diameter'] < 4 * p['dMax']:

@@ -97,8 +97,7 @@ def buildSpecimen(exp):
                         lambda force: sample.pressLayer(exp, steel, mass, force), toHeight)
     # a grain that jumped the mould's rim while the layers fell lies on the base outside: not part of the specimen
     escaped = [b.id for b in grains.spheres() if math.hypot(b.state.pos[0], b.state.pos[1]) > R or b.state.pos[2] < 0]
-    for i in escaped:
-        O.bodies.erase(i)
+    grains.erase(escaped)
     if escaped:
         exp.phases.say('%d grains left the mould while falling: taken away' % len(escaped))
     preparation.restoreFriction(ballast, p['friction'], p['steelFriction'])
