@@ -17,6 +17,7 @@ from yade import O  # noqa: E402
 from ballast import harvest  # noqa: E402
 from ballast.experiments import cyclic  # noqa: E402
 from ballast.experiments.triaxial import TriaxialTest  # noqa: E402
+from ballast.experiments.triaxial.experiment import PRESS  # noqa: E402
 from ballast.experiments.triaxial.outputs import OWN_COLUMNS  # noqa: E402
 from ballast.experiments.triaxial.strains import axialStrain, volumetricStrain  # noqa: E402
 from ballast.params import ParamError  # noqa: E402
@@ -189,3 +190,22 @@ def test_a_long_run_goes_on_in_slices(run, tmp_path):
         TriaxialTest(results=str(tmp_path), runId='other', continueFrom=state, **dict(SMALL, young=4e9)).run()
     with pytest.raises(ParamError, match='continueFrom'):
         TriaxialTest(continueFrom=str(tmp_path / 'none.yade.gz'), **SMALL)
+
+
+def test_a_reopened_state_carries_the_loads_it_was_saved_with(run):
+    """YADE saves no permanent force: a state reopened stood unconfined and unloaded until the membrane's next update
+    (the cycle after it strained twice as much). Reopened, every grain the membrane pressed and the top platen carry
+    the very forces of the last update before the save, to the bit."""
+    test = run[0]
+    m = test.membrane
+    want = {i: tuple(f) for i, f in zip(m.loaded, m.forces)}
+    platen = test.platenForce
+    assert len(want) > 20 and platen < 0
+    again = TriaxialTest.reopen(os.path.join(run[2], 'state-end.yade.gz'))
+    for e in O.engines:   # YADE reads a permanent force back once a step synced it: a step with no new update
+        if e.label == PRESS:
+            e.dead = True
+    O.run(1, True)
+    got = {i: tuple(O.forces.permF(i)) for i in again.membrane.loaded}
+    assert got == want
+    assert tuple(O.forces.permF(again.rig.top)) == (0.0, 0.0, platen)

@@ -58,6 +58,7 @@ class TriaxialTest(Cyclic, Experiment):
         self.target = None
         self.cycling = False
         self.compression = None    # the monotonic compression under way: t0, H0, V0, rows (monotonic.COLUMNS)
+        self.platenForce = None    # the axial load set on the top platen at the last update [N] (kept with the state)
         Experiment.__init__(self, parameters, **params)
 
     def pieces(self):
@@ -137,7 +138,17 @@ class TriaxialTest(Cyclic, Experiment):
             return
         area = m.volume / m.height()
         weight = O.bodies[self.rig.top].state.mass * -scene.GRAVITY[2]
-        O.forces.setPermF(self.rig.top, Vector3(0, 0, weight - (m.pressure + self.deviator()) * area))
+        self.platenForce = weight - (m.pressure + self.deviator()) * area
+        O.forces.setPermF(self.rig.top, Vector3(0, 0, self.platenForce))
+
+    def reopened(self):
+        """A scene just loaded: the membrane's and the platen's loads set again as they were when it was saved (YADE
+        saves no permanent force; without them the specimen stood unconfined and unloaded until the next update, and
+        the cycle after a reopened state strained about twice as much)."""
+        if self.membrane is not None and self.membrane.loaded:
+            self.membrane.restore()
+        if self.rig is not None and self.rig.top is not None and self.platenForce is not None:
+            O.forces.setPermF(self.rig.top, Vector3(0, 0, self.platenForce))
 
     def startCycling(self):
         """The deviator's cycles from now on, the engines, the recorder, the time-step options, the first state."""
@@ -317,7 +328,7 @@ class TriaxialTest(Cyclic, Experiment):
                     recorder=runtime.ref(self.recorder), jumper=runtime.ref(self.jumper),
                     stepChoice=runtime.ref(self.stepChoice), porosity=self.porosity, specimenFile=self.specimenFile,
                     consolidated=self.consolidated, tConsolidate=self.tConsolidate, tSeat=self.tSeat, initial=self.initial, gradings=self.gradings, frames=self.frames, target=self.target,
-                    cycling=self.cycling, compression=self.compression)
+                    cycling=self.cycling, compression=self.compression, platenForce=self.platenForce)
 
     @classmethod
     def fromState(cls, s, ref):
@@ -330,4 +341,5 @@ class TriaxialTest(Cyclic, Experiment):
                   'target', 'cycling'):
             setattr(exp, k, s[k])
         exp.compression = s.get('compression')   # states of before the monotonic compression have none
+        exp.platenForce = s.get('platenForce')   # states of before it was kept: the next update sets it
         return exp

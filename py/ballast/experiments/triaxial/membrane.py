@@ -22,16 +22,26 @@ class Membrane:
     def __init__(self, bottom=None, top=None, pressure=0.0, cell=0.01, depth=0.005):
         self.bottom, self.top, self.pressure, self.cell, self.depth = bottom, top, pressure, cell, depth
         self.loaded = []
+        self.forces = []   # the force [N] set on each loaded grain: YADE's permanent forces are not saved with a scene
         self.area = self.volume = math.nan
         self.bridged = self.empty = 0
 
     def state(self):
-        return {k: getattr(self, k) for k in ('bottom', 'top', 'pressure', 'cell', 'depth', 'loaded', 'area', 'volume',
-                                               'bridged', 'empty')}
+        return {k: getattr(self, k) for k in ('bottom', 'top', 'pressure', 'cell', 'depth', 'loaded', 'forces', 'area',
+                                               'volume', 'bridged', 'empty')}
 
     @classmethod
     def fromState(cls, s, ref=None):
-        return runtime.fromAttributes(cls, s)
+        return runtime.fromAttributes(cls, dict({'forces': None}, **s))   # states of before: worked out again
+
+    def restore(self):
+        """The permanent forces of the last update set again on a scene just loaded (O.load keeps no permanent force:
+        until the next update the specimen would stand unconfined); a state of before they were kept: an update."""
+        if self.forces is None or len(self.forces) != len(self.loaded):
+            self.update()
+            return
+        for i, f in zip(self.loaded, self.forces):
+            O.forces.setPermF(i, Vector3(*f))
 
     def height(self):
         """The distance between the platens' faces [m]."""
@@ -68,6 +78,7 @@ class Membrane:
         for k, i in zip(carried.tolist(), now):
             O.forces.setPermF(i, Vector3(*force[k]))
         self.loaded = now
+        self.forces = force[carried].tolist()
         self.area, self.volume = float(out['area']), float(out['volume'])
         self.bridged, self.empty = int(out['bridged']), int(out['empty'])
 
