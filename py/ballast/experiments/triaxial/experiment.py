@@ -145,10 +145,13 @@ class TriaxialTest(Cyclic, Experiment):
         """A scene just loaded: the membrane's and the platen's loads set again as they were when it was saved (YADE
         saves no permanent force; without them the specimen stood unconfined and unloaded until the next update, and
         the cycle after a reopened state strained about twice as much)."""
-        if self.membrane is not None and self.membrane.loaded:
-            self.membrane.restore()
-        if self.rig is not None and self.rig.top is not None and self.platenForce is not None:
-            O.forces.setPermF(self.rig.top, Vector3(0, 0, self.platenForce))
+        if self.membrane is None or not self.membrane.loaded or self.rig is None or self.rig.top is None:
+            return
+        if self.platenForce is None:   # a state of before the loads were kept: both worked out again now
+            self.press()
+            return
+        self.membrane.restore()
+        O.forces.setPermF(self.rig.top, Vector3(0, 0, self.platenForce))
 
     def startCycling(self):
         """The deviator's cycles from now on, the engines, the recorder, the time-step options, the first state."""
