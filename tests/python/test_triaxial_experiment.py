@@ -195,17 +195,14 @@ def test_a_long_run_goes_on_in_slices(run, tmp_path):
 def test_a_reopened_state_carries_the_loads_it_was_saved_with(run):
     """YADE saves no permanent force: a state reopened stood unconfined and unloaded until the membrane's next update
     (the cycle after it strained twice as much). Reopened, every grain the membrane pressed and the top platen carry
-    the very forces of the last update before the save, to the bit."""
-    test = run[0]
-    m = test.membrane
-    want = {i: tuple(f) for i, f in zip(m.loaded, m.forces)}
-    platen = test.platenForce
-    assert len(want) > 20 and platen < 0
+    the very forces of the last update before the save (kept with the state), to the bit, before any new update."""
     again = TriaxialTest.reopen(os.path.join(run[2], 'state-end.yade.gz'))
+    m = again.membrane
+    want = {i: tuple(f) for i, f in zip(m.loaded, m.forces)}
+    assert len(want) > 20 and again.platenForce < 0
     for e in O.engines:   # YADE reads a permanent force back once a step synced it: a step with no new update
         if e.label == PRESS:
             e.dead = True
     O.run(1, True)
-    got = {i: tuple(O.forces.permF(i)) for i in again.membrane.loaded}
-    assert got == want
-    assert tuple(O.forces.permF(again.rig.top)) == (0.0, 0.0, platen)
+    assert {i: tuple(O.forces.permF(i)) for i in m.loaded} == want
+    assert tuple(O.forces.permF(again.rig.top)) == (0.0, 0.0, again.platenForce)
