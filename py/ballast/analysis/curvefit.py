@@ -13,7 +13,8 @@ import numpy as np
 import pandas as pd
 
 from ..experiments.triaxial.strains import atCycles, readReference
-from ..settlementlaws import bedChanged, settlementJumped
+from ..experiments.cyclic import changed
+from ..settlementlaws import settlementJumped
 from .settlement import realizationRuns
 
 
@@ -35,8 +36,7 @@ def total(cycles, q):
     if q + 'Jumped' in cycles:
         return v + cycles[q + 'Jumped'].to_numpy(float)
     if 'jumped' in cycles and cycles.jumped.any():   # records of before those columns: the same law, here
-        changed = bedChanged(cycles.crushes.to_numpy(), cycles.abrasions.to_numpy())
-        return v + settlementJumped(cycles.cycle, v, changed)
+        return v + settlementJumped(cycles.cycle, v, changed(cycles))
     return v
 
 

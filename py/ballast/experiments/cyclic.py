@@ -210,6 +210,18 @@ class Cyclic:
         """cycles.csv as it stands, a DataFrame (each experiment's outputs make it)."""
         raise NotImplementedError
 
+    def run(self):
+        """prepare() and load() (Experiment.run); with continueFrom, the saved run reopened into this run's folder and
+        `cycles` more cycles of it (goOn); with resume, first the run killed in this run's folder taken to its end
+        (Experiment.resumeKilled). An experiment without those parameters runs as Experiment.run. Returns the
+        summary."""
+        resumed = self.resumeKilled()
+        if resumed is not None:
+            return resumed
+        if self.p.get('continueFrom'):
+            return self.goOn()
+        return super().run()
+
     def goOn(self):
         """The run saved in continueFrom, reopened with this run's folder and reporting, `cycles` more cycles (a
         long run in slices). ParamError naming the first physics parameter that differs from the saved run's, before

@@ -115,9 +115,10 @@ def deposit(exp, tFall):
     exp.phases.run('deposit', tEnd=O.time + tFall, simSpan=tFall, simStart=O.time, extra=grains.restInfo)
 
 
-def press(exp, steel, mass, force):
+def press(exp, steel, mass, force, mark=None):
     """A steel plate (a wall, free along z only, of `mass` [kg]) laid on the grains' top and pressed down with
-    `force` [N] until it rests (PRESS_STILL, within PRESS_TIME). Returns its id: the caller keeps or erases it."""
+    `force` [N] until it rests (PRESS_STILL, within PRESS_TIME), or until it reaches the height `mark` [m] if given.
+    Returns its id: the caller keeps or erases it."""
     x, r, _ = grains.arrays()
     plate = utils.wall(float(np.max(x[:, 2] + r)), axis=2, sense=-1, material=steel, mask=STEEL_MASK)
     plate.state.blockedDOFs = 'xyXYZ'
@@ -128,8 +129,14 @@ def press(exp, steel, mass, force):
     O.forces.setPermF(pid, Vector3(0, 0, -force))
     tShort, tLong = PRESS_TIME
     t0 = O.time
-    exp.phases.run('press', preparation.still(pid, *PRESS_STILL, after=t0 + tShort, unbalanced=0.01), tEnd=t0 + tLong,
-                   extra=lambda: 'plate at %.4f m  %s' % (O.bodies[pid].state.pos[2], grains.restInfo()))
+    rests = preparation.still(pid, *PRESS_STILL, after=t0 + tShort, unbalanced=0.01)
+    if mark is None:
+        exp.phases.run('press', rests, tEnd=t0 + tLong,
+                       extra=lambda: 'plate at %.4f m  %s' % (O.bodies[pid].state.pos[2], grains.restInfo()))
+    else:   # checked often: the plate should stop near its mark
+        exp.phases.run('press', lambda: O.bodies[pid].state.pos[2] <= mark or rests(), tEnd=t0 + tLong, checkEvery=20,
+                       extra=lambda: 'plate at %.4f m, its mark %.4f m  %s' % (O.bodies[pid].state.pos[2], mark,
+                                                                              grains.restInfo()))
     return pid
 
 
@@ -172,18 +179,7 @@ def pressLayerTo(exp, steel, mass, zTarget, area, pressure):
     top = float(np.max(x[:, 2] + r))
     if top <= zTarget:
         return top, 0.0
-    plate = utils.wall(top, axis=2, sense=-1, material=steel, mask=STEEL_MASK)
-    plate.state.blockedDOFs = 'xyXYZ'
-    plate.state.mass = mass
-    plate.state.inertia = Vector3(1, 1, 1)  # a wall has none; its rotations are blocked, but Newton divides by it
-    plate.dynamic = True
-    pid = O.bodies.append(plate)
-    O.forces.setPermF(pid, Vector3(0, 0, -pressure * area))
-    t0 = O.time
-    rests = preparation.still(pid, *PRESS_STILL, after=t0 + PRESS_TIME[0], unbalanced=0.01)
-    exp.phases.run('press', lambda: O.bodies[pid].state.pos[2] <= zTarget or rests(), tEnd=t0 + PRESS_TIME[1],
-                   checkEvery=20, extra=lambda: 'plate at %.4f m, its mark %.4f m  %s' % (
-                       O.bodies[pid].state.pos[2], zTarget, grains.restInfo()))
+    pid = press(exp, steel, mass, pressure * area, mark=zTarget)
     b = O.bodies[pid]
     O.forces.setPermF(pid, Vector3(0, 0, 0))   # a permanent force outlives its body in the force container
     if b.state.pos[2] <= zTarget:   # at the mark: held there (a fixed plate) while the grains come to rest

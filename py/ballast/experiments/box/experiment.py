@@ -259,17 +259,6 @@ class BoxTest(Cyclic, Experiment):
             1e3 * s['settlement'], 1e3 * s['resilient'], s['nCrushed'], s['nAbraded'], self.out))
         return s
 
-    def run(self):
-        """prepare() and load(); with continueFrom, the saved run reopened into this run's folder and `cycles`
-        more cycles of it (goOn); with resume, first the run killed in this run's folder taken to its end
-        (Experiment.resumeKilled). Returns the summary."""
-        resumed = self.resumeKilled()
-        if resumed is not None:
-            return resumed
-        if self.p['continueFrom']:
-            return self.goOn()
-        return Experiment.run(self)
-
     def resumed(self, state):
         """Experiment.resumeKilled's last step: this run, reopened from `state` in the folder of its killed
         process, cuts samples.csv back to the state's time (the rows after it are taken again) and goes on to the

@@ -208,16 +208,6 @@ class TriaxialTest(Cyclic, Experiment):
         if all(g['cycle'] != k for g in self.gradings):
             self.gradings.append(breakage.grading(self, k))
 
-    def run(self):
-        """prepare() and load(); with continueFrom, the saved run reopened into this run's folder and `cycles` more
-        cycles of it (Cyclic.goOn). Returns the summary."""
-        if self.p['continueFrom']:
-            return self.goOn()
-        return Experiment.run(self)
-
-    def cyclesDone(self):
-        return len(self.recorder.cycles) + self.recorder.jumped if self.recorder is not None else 0
-
     def cycleFrame(self):
         return outputs.cycleTable(self)
 
