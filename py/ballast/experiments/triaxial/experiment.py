@@ -208,6 +208,9 @@ class TriaxialTest(Cyclic, Experiment):
         if all(g['cycle'] != k for g in self.gradings):
             self.gradings.append(breakage.grading(self, k))
 
+    def cyclesDone(self):
+        return len(self.recorder.cycles) + self.recorder.jumped if self.recorder is not None else 0
+
     def cycleFrame(self):
         return outputs.cycleTable(self)
 
