@@ -206,3 +206,22 @@ def test_a_reopened_state_carries_the_loads_it_was_saved_with(run):
     O.run(1, True)
     assert {i: tuple(O.forces.permF(i)) for i in m.loaded} == want
     assert tuple(O.forces.permF(again.rig.top)) == (0.0, 0.0, again.platenForce)
+
+
+def test_cycling_stops_where_the_specimen_fails(run, tmp_path):
+    """failureStrain: the axial strain of the sample that first reaches it stops cycling in that cycle (here the
+    third, as it loads: the saved run's last strain plus half its resilient strain); summary.json says so with the
+    whole cycles before it; the failed run reopened runs no more cycles."""
+    test, s, folder, _ = run
+    before = pd.read_csv(os.path.join(folder, 'samples.csv'))
+    limit = before.axialStrain.iloc[-1] + 0.5 * s['resilientStrain']
+    f = TriaxialTest(results=str(tmp_path), runId='fail', continueFrom=os.path.join(folder, 'state-end.yade.gz'),
+                     **dict(SMALL, cycles=3, vtk=0, failureStrain=limit)).run()
+    rows = pd.read_csv(os.path.join(str(tmp_path), f['runId'], 'samples.csv'))
+    rows = rows[rows.t > 2 * s['loadPeriod']]   # cycle 3's (samples.csv's cycle: the cycles closed by then)
+    assert f['stoppedBy'] == 'failure' and f['failedInCycle'] == 3 and f['cycles'] == 2
+    assert f['axialStrainAtStop'] >= limit and abs(f['axialStrainAtStop'] - rows.axialStrain.iloc[-1]) < 1e-9   # CSV digits
+    assert len(rows) > 1 and (rows.axialStrain.iloc[:-1] < limit).all()
+    again = TriaxialTest.reopen(os.path.join(str(tmp_path), f['runId'], 'state-end.yade.gz'))
+    steps = O.iter
+    assert again.load(5)['failedInCycle'] == 3 and O.iter == steps

@@ -45,8 +45,8 @@ class TriaxialTest(Cyclic, Experiment):
 
     NAME = 'triaxial'
     Parameters = TriaxialParameters
-    REOPEN_PARAMS = ('results', 'runId', 'progress', 'vtk', 'cycles', 'saveEvery', 'specimenDir', 'continueFrom') + \
-        tuple(CYCLE_JUMP)
+    REOPEN_PARAMS = ('results', 'runId', 'progress', 'vtk', 'cycles', 'saveEvery', 'specimenDir', 'continueFrom',
+                     'failureStrain') + tuple(CYCLE_JUMP)
 
     def __init__(self, parameters=None, **params):
         self.rig = self.membrane = self.recorder = None
@@ -59,6 +59,7 @@ class TriaxialTest(Cyclic, Experiment):
         self.cycling = False
         self.compression = None    # the monotonic compression under way: t0, H0, V0, rows (monotonic.COLUMNS)
         self.platenForce = None    # the axial load set on the top platen at the last update [N] (kept with the state)
+        self.failed = None         # the cycle in which the axial strain passed failureStrain: cycling stopped there
         Experiment.__init__(self, parameters, **params)
 
     def pieces(self):
@@ -192,6 +193,10 @@ class TriaxialTest(Cyclic, Experiment):
         k = self.recorder.sample(self.p, self.membrane, self.deviator(), self.ownStep())
         row = self.recorder.samples[-1]
         appendSample(self, row)
+        if self.failed is None and row[5] >= self.p['failureStrain']:
+            self.failed = int(row[1]) + 1   # samples.csv's cycle: the cycles closed by then
+            self.say('the specimen failed: axial strain %.2f %% in cycle %d passed failureStrain (%g %%); cycling stops' % (
+                100 * row[5], self.failed, 100 * self.p['failureStrain']))
         plot.addData(**dict(zip(('t', 'cycle', 'q', 'qGrains', 'p', 'axialStrain', 'volumetricStrain'), row[:7])))
         if k:
             outputs.writeCycles(self)
@@ -228,6 +233,9 @@ class TriaxialTest(Cyclic, Experiment):
         if self.out is None:   # a reopened run writes into a folder of its own
             self.dir.create()
             self.markRunning(continues=self.dir.previous, continuesState=self.dir.source)
+        if self.failed is not None:
+            self.say('load: no cycles: the specimen failed in cycle %d' % self.failed)
+            return self.finishRun(lambda: outputs.write(self))
         self.syncJumping()
         self.startFrames()
         self.target = self.cyclesDone() + n
@@ -242,7 +250,7 @@ class TriaxialTest(Cyclic, Experiment):
             target - self.cyclesDone(), p.seatDeviator() / 1e3, p.peakDeviator() / 1e3, p['loadFile'] or 'sine',
             p.period(), p['confining'] / 1e3, O.dt, rec.period / O.dt))
         if self.cyclesDone() < target:
-            self.runUntil(lambda: self.cyclesDone() >= target, tEnd=tEnd + 2 * rec.period / p['samples'], phase='load',
+            self.runUntil(lambda: self.cyclesDone() >= target or self.failed is not None, tEnd=tEnd + 2 * rec.period / p['samples'], phase='load',
                           checkEvery=50, simSpan=tEnd - O.time, simStart=O.time,
                           extra=lambda: 'cycle %d of %d, axial strain %.3f %%, volumetric %.3f %%, %d crushed' % (
                               self.cyclesDone(), target, 100 * (rec.samples[-1][5] if rec.samples else 0),
@@ -324,7 +332,7 @@ class TriaxialTest(Cyclic, Experiment):
                     recorder=runtime.ref(self.recorder), jumper=runtime.ref(self.jumper),
                     stepChoice=runtime.ref(self.stepChoice), porosity=self.porosity, specimenFile=self.specimenFile,
                     consolidated=self.consolidated, tConsolidate=self.tConsolidate, tSeat=self.tSeat, initial=self.initial, gradings=self.gradings, frames=self.frames, target=self.target,
-                    cycling=self.cycling, compression=self.compression, platenForce=self.platenForce)
+                    cycling=self.cycling, compression=self.compression, platenForce=self.platenForce, failed=self.failed)
 
     @classmethod
     def fromState(cls, s, ref):
@@ -338,4 +346,5 @@ class TriaxialTest(Cyclic, Experiment):
             setattr(exp, k, s[k])
         exp.compression = s.get('compression')   # states of before the monotonic compression have none
         exp.platenForce = s.get('platenForce')   # states of before it was kept: the next update sets it
+        exp.failed = s.get('failed')
         return exp

@@ -82,7 +82,10 @@ def summary(exp):
         'cpuSecondsPerCycle': float(np.nanmedian(cyc.cpuSeconds)) if n and cyc.cpuSeconds.notna().any() else math.nan,
         # the steps the cycles took (their median, as cpuSecondsPerCycle), not the period over the last step
         'stepsPerCycle': (float(np.nanmedian(cyc.stepsPerCycle)) if n and cyc.stepsPerCycle.notna().any()
-                          else rec.period / O.dt), **cyclic.jumpSummary(cyc, exp.jumper)}
+                          else rec.period / O.dt), **cyclic.jumpSummary(cyc, exp.jumper),
+        # failed: cycling stopped in that cycle (cycles.csv holds the whole cycles before it)
+        **({'stoppedBy': 'failure', 'failedInCycle': exp.failed, 'axialStrainAtStop': float(rec.samples[-1][5]),
+            'volumetricStrainAtStop': float(rec.samples[-1][6])} if exp.failed is not None else {})}
 
 
 def gradingTable(exp):
