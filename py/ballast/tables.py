@@ -16,6 +16,7 @@ import sys
 import tempfile
 import warnings
 
+from . import textfile
 from .names import runDirName
 from .params import ParamError, literal
 
@@ -49,16 +50,10 @@ def tableReader():
 
 def readText(path):
     """A table's text; TableError naming the file if it is not UTF-8 text (a binary file, another encoding)."""
-    with open(path, 'rb') as fh:
-        data = fh.read()
     try:
-        text = data.decode('utf-8')
-    except UnicodeDecodeError as e:
-        raise TableError('%s: not a text table: byte %d (0x%02x) is not UTF-8 (a binary file or another encoding?)' % (
-            path, e.start, data[e.start])) from None
-    if '\0' in text:
-        raise TableError('%s: not a text table: it holds a NUL byte at %d (a binary file?)' % (path, text.index('\0')))
-    return text
+        return textfile.read(path)
+    except textfile.NotText as e:
+        raise TableError(str(e).replace('not a text file', 'not a text table')) from None
 
 
 class Table:

@@ -1,6 +1,7 @@
 """ballast.experiments.loadhistory (the box's load): the sine between the seating and the peak load, a CSV history
 (shape, interpolation, repetition) and every malformed CSV refused with its line named (no YADE)."""
 import math
+import re
 
 import pytest
 
@@ -73,3 +74,16 @@ def test_a_load_option_the_history_overrides_is_refused(tmp_path):
         with pytest.raises(ParamError, match='%s = %r is not allowed: is not used with loadFile' % (k, v)) as e:
             check({'loadFile': str(path), k: v})
         assert e.value.name == k
+
+
+@pytest.mark.parametrize('content, where', [(b'\xb7\x01binary', 'byte 0 (0xb7) is not UTF-8'),
+                                            (b't,F\n0,1\n\xff\xfe,3\n', 'byte 8 (0xff) is not UTF-8'),
+                                            (b't,F\n0,1\x00\n', 'it holds a NUL byte at 7')])
+def test_a_binary_history_is_refused_in_one_line_naming_the_byte(tmp_path, content, where):
+    # the audit's binary --loadFile gave a UnicodeDecodeError traceback (issue 48, item 1)
+    path = tmp_path / 'load.csv'
+    path.write_bytes(content)
+    with pytest.raises(ParamError, match=r"loadFile = .*load.csv' is not allowed: loadFile .*load.csv: not a text "
+                                         r"file: " + re.escape(where)) as e:
+        check({'loadFile': str(path)})
+    assert '\n' not in str(e.value)

@@ -12,7 +12,7 @@ import pandas as pd
 import pytest
 
 pytest.importorskip('yade')
-from yade import O  # noqa: E402
+from yade import O, Vector3  # noqa: E402
 
 from ballast import harvest  # noqa: E402
 from ballast.experiments import cyclic  # noqa: E402
@@ -225,3 +225,16 @@ def test_cycling_stops_where_the_specimen_fails(run, tmp_path):
     again = TriaxialTest.reopen(os.path.join(str(tmp_path), f['runId'], 'state-end.yade.gz'))
     steps = O.iter
     assert again.load(5)['failedInCycle'] == 3 and O.iter == steps
+
+
+def test_a_collapse_between_two_samples_stops_as_a_failure(run, tmp_path):
+    """A specimen that collapses (q_max 370 kPa with crushing: the platen fell through it within a cycle's 1/50) is
+    caught at the membrane's next update, not at the next sample: the platen put below the base, the run stops as a
+    failure at once (no membrane for a specimen with no height, no exception), with the failure's row in samples.csv."""
+    again = TriaxialTest.reopen(os.path.join(run[2], 'state-end.yade.gz'), results=str(tmp_path), failureStrain=0.2)
+    top, base = O.bodies[again.rig.top].state, O.bodies[again.rig.base].state
+    top.pos = Vector3(top.pos[0], top.pos[1], base.pos[2] - 0.01)
+    steps = O.iter
+    s = again.load(1)
+    assert s['stoppedBy'] == 'failure' and s['failedInCycle'] == 3 and s['axialStrainAtStop'] > 1.0
+    assert O.iter - steps <= 60   # stopped within the run's check interval (50 steps) of the first update

@@ -15,9 +15,12 @@ blow); its first force is the seating load. Between the rows the load is interpo
 YADE's InterpolatingDirectedForceEngine does.
 """
 import csv
+import io
 import math
 
 import numpy as np
+
+from .. import textfile
 
 SINE_SAMPLES = 2000   # [-] rows of one sine cycle: linear interpolation errs by at most (peak - seat) pi^2 / (4 N^2)
 #                       (6e-7 of the amplitude)
@@ -54,37 +57,38 @@ class LoadHistory:
         what), FORCE by default: F [N]); other columns ignored."""
         c, unit, what = column
         try:
-            fh = open(path, newline='')
+            text = textfile.read(path)
         except OSError as e:
             raise LoadHistoryError('loadFile: cannot read %s (%s)' % (path, e.strerror)) from None
-        with fh:
-            rows = csv.reader(fh)
-            header = next(rows, None)
-            names = [h.strip() for h in header] if header else []
-            if 't' not in names or c not in names:
-                raise LoadHistoryError('loadFile %s: line 1 must name the columns t (time [s]) and %s (%s [%s]), got %r'
-                                       % (path, c, what, unit, ','.join(names)))
-            it, iF = names.index('t'), names.index(c)
-            times, forces = [], []
-            for line, row in enumerate(rows, start=2):
-                if not row or all(not c.strip() for c in row):
-                    continue
-                try:
-                    t, F = float(row[it]), float(row[iF])
-                except (IndexError, ValueError):
-                    raise LoadHistoryError('loadFile %s: line %d: expected numbers in columns t and %s, got %r'
-                                           % (path, line, c, ','.join(row))) from None
-                if not (math.isfinite(t) and math.isfinite(F)) or F < 0:
-                    raise LoadHistoryError('loadFile %s: line %d: t = %r s, %s = %r %s: expected finite values, %s >= 0'
-                                           % (path, line, t, c, F, unit, c))
-                if not times and t != 0:
-                    raise LoadHistoryError('loadFile %s: line %d: the history starts at t = 0, got t = %r s'
-                                           % (path, line, t))
-                if times and t <= times[-1]:
-                    raise LoadHistoryError('loadFile %s: line %d: t = %r s does not rise (the row before: %r s)'
-                                           % (path, line, t, times[-1]))
-                times.append(t)
-                forces.append(F)
+        except textfile.NotText as e:
+            raise LoadHistoryError('loadFile %s' % e) from None
+        rows = csv.reader(io.StringIO(text, newline=''))
+        header = next(rows, None)
+        names = [h.strip() for h in header] if header else []
+        if 't' not in names or c not in names:
+            raise LoadHistoryError('loadFile %s: line 1 must name the columns t (time [s]) and %s (%s [%s]), got %r'
+                                   % (path, c, what, unit, ','.join(names)))
+        it, iF = names.index('t'), names.index(c)
+        times, forces = [], []
+        for line, row in enumerate(rows, start=2):
+            if not row or all(not c.strip() for c in row):
+                continue
+            try:
+                t, F = float(row[it]), float(row[iF])
+            except (IndexError, ValueError):
+                raise LoadHistoryError('loadFile %s: line %d: expected numbers in columns t and %s, got %r'
+                                       % (path, line, c, ','.join(row))) from None
+            if not (math.isfinite(t) and math.isfinite(F)) or F < 0:
+                raise LoadHistoryError('loadFile %s: line %d: t = %r s, %s = %r %s: expected finite values, %s >= 0'
+                                       % (path, line, t, c, F, unit, c))
+            if not times and t != 0:
+                raise LoadHistoryError('loadFile %s: line %d: the history starts at t = 0, got t = %r s'
+                                       % (path, line, t))
+            if times and t <= times[-1]:
+                raise LoadHistoryError('loadFile %s: line %d: t = %r s does not rise (the row before: %r s)'
+                                       % (path, line, t, times[-1]))
+            times.append(t)
+            forces.append(F)
         if len(times) < 2:
             raise LoadHistoryError('loadFile %s: %d row(s) of data; a cycle needs at least 2' % (path, len(times)))
         span = max(forces) - min(forces)

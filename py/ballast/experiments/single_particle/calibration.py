@@ -4,12 +4,14 @@ platens (closedform), and the model's ft0, m and Weibull modulus fitted to every
 maximum likelihood (strengths.sizeLawFit: sigma_i Weibull with scale ft0 r_i^-m). Written as JSON and as
 a one-row yade-batch table that the oedometer and the study tables read. No YADE."""
 import csv
+import io
 import json
 import math
 import os
 
 import numpy as np
 
+from ... import textfile
 from ...engineparams import CRUSH
 from ...params import ParamError, validate
 from .closedform import STRESS_PER_F_OVER_D2, criterionStress
@@ -63,13 +65,15 @@ def readMeasured(path):
     a diameter outside the sizes of ballast grains or a strength outside rock's (the wrong unit, with a
     hint)."""
     try:
-        with open(path, newline='') as fh:
-            rows = [(n, r) for n, r in _numbered(csv.reader(fh, skipinitialspace=True)) if any(c.strip() for c in r)]
+        rows = [(n, r) for n, r in _numbered(csv.reader(io.StringIO(textfile.read(path), newline=''),
+                                                         skipinitialspace=True)) if any(c.strip() for c in r)]
     except FileNotFoundError:
         raise CalibrationError('%s: no such file' % path) from None
     except IsADirectoryError:
         raise CalibrationError('%s: a folder, not a CSV file' % path) from None
-    except (UnicodeDecodeError, csv.Error) as e:
+    except textfile.NotText as e:
+        raise CalibrationError('%s (a CSV text file is expected)' % e) from None
+    except csv.Error as e:
         raise CalibrationError('%s: not a CSV text file: %s' % (path, str(e).splitlines()[0])) from None
     if not rows:
         raise CalibrationError('%s: empty: expected a header row (diameter,force) and a row per grain' % path)

@@ -132,6 +132,8 @@ class TriaxialTest(Cyclic, Experiment):
         (p' + q) A on the top platen, A = the volume the membrane encloses over the platens' distance, less the platen's
         weight (the load the specimen carries is (p' + q) A, as a load cell under the ram would read it)."""
         m = self.membrane
+        if self.cycling and self.failing():
+            return   # the loads held as they were until cycling stops (runUntil checks every 50 steps)
         m.pressure = self.p['confining'] * min(1.0, (O.time - self.tConsolidate) / RAMP)
         m.update()
         if self.compression is not None:   # the platen moves at its speed: no load on it
@@ -141,6 +143,14 @@ class TriaxialTest(Cyclic, Experiment):
         weight = O.bodies[self.rig.top].state.mass * -scene.GRAVITY[2]
         self.platenForce = weight - (m.pressure + self.deviator()) * area
         O.forces.setPermF(self.rig.top, Vector3(0, 0, self.platenForce))
+
+    def failing(self):
+        """True once the specimen has failed (failureStrain), checked at every update as well as at every sample: a
+        specimen collapsing (a crushing cascade under a high deviator) can pass its whole height between two samples,
+        and the membrane has no shape once the platen is through. The failure's row of samples.csv is taken then."""
+        if self.failed is None and axialStrain(self.recorder.H0, self.membrane.height()) >= self.p['failureStrain']:
+            self.sample()
+        return self.failed is not None
 
     def reopened(self):
         """A scene just loaded: the membrane's and the platen's loads set again as they were when it was saved (YADE
@@ -185,6 +195,8 @@ class TriaxialTest(Cyclic, Experiment):
 
     def frame(self):
         """A frame of triaxial.pvd (outputs.writeFrame), once at a time."""
+        if self.membrane.height() <= 0:
+            return   # a specimen collapsed through its height (failing): no membrane to draw
         if not self.frames or self.frames[-1][0] < O.time - self.recorder.t0:
             outputs.writeFrame(self)
 

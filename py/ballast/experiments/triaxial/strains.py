@@ -1,9 +1,12 @@
 """Strains of a triaxial specimen from its boundary, and the measured curves they are held against (docs/triaxial.md,
 "Outputs"): compression positive, as the laboratory reports them. Needs no YADE."""
 import csv
+import io
 import math
 
 import numpy as np
+
+from ... import textfile
 
 # what a measured curve's file holds: N, then one strain column (a fraction), as ../shared/data's files do
 REFERENCE_COLUMNS = {'axial': 'axial_strain', 'volumetric': 'volumetric_strain'}
@@ -34,12 +37,11 @@ def readReference(path):
     (REFERENCE_COLUMNS) and rows of numbers, N >= 1 and rising (equal N allowed, read in order), strains finite and
     within (-1, 1). CurveError naming the file and the line of the first fault."""
     try:
-        with open(path, newline='') as fh:
-            rows = list(csv.reader(fh))
+        rows = list(csv.reader(io.StringIO(textfile.read(path), newline='')))
     except OSError as e:
         raise CurveError('%s: cannot be read (%s)' % (path, e.strerror or e)) from None
-    except UnicodeDecodeError:
-        raise CurveError('%s: not a text file' % path) from None
+    except textfile.NotText as e:
+        raise CurveError(str(e)) from None
     if not rows:
         raise CurveError('%s: empty; expected a header N,%s or N,%s and rows of numbers' % (
             path, *REFERENCE_COLUMNS.values()))
