@@ -6,6 +6,7 @@ import math
 import numpy as np
 import pytest
 
+from ballast.grainkinds import clumpshapes
 from ballast.grainkinds.clumpshapes import clumpMembers, principalExtents, unionVolume
 
 
@@ -54,3 +55,25 @@ def test_bad_inputs_are_named(kw, name):
     with pytest.raises(ValueError) as e:
         clumpMembers(**args)
     assert str(e.value).startswith(name + ':')
+
+
+def test_containers_by_hand():
+    # 0 holds 1 (0.5 + 0.3 <= 1) and 3 (0 + 0.2); 2 overlaps 0 but sticks out; 4 and 5 are one sphere twice: the
+    # first holds the second; 6 sits in 1 and so in 0, whose margin is the larger (1 - 0.55 - 0.1 against 0.3 - 0.05
+    # - 0.1)
+    c = [(0, 0, 0), (0.5, 0, 0), (1.5, 0, 0), (0, 0, 0), (5, 0, 0), (5, 0, 0), (0.55, 0, 0)]
+    r = [1.0, 0.3, 0.8, 0.2, 0.5, 0.5, 0.1]
+    assert clumpshapes.containers(c, r).tolist() == [-1, 0, -1, 0, -1, 4, 0]
+
+
+def test_a_piece_of_no_volume_joins_the_piece_its_members_lie_deepest_in():
+    # the crash of a clump box (issue 47): a member alone on its side of a plane, wholly inside members of another
+    # piece, got no share of the volume and would have become a grain of no mass. Pieces 0, 1, 2 of which 1 is
+    # empty: its member (index 2) lies deepest in member 0 (1 - 0.2 against 0.5 - 1.0 for member 1) -> piece 0;
+    # pieces renumbered 0, 1 and the shares of the others kept
+    c = [(0, 0, 0), (1.2, 0, 0), (0.2, 0, 0), (2.0, 0, 0)]
+    r = [1.0, 0.5, 0.1, 0.4]
+    piece, shares = clumpshapes.absorbEmpty(c, r, [0, 2, 1, 2], [0.7, 0.0, 0.3])
+    assert piece.tolist() == [0, 1, 0, 1] and shares.tolist() == [0.7, 0.3]
+    same = clumpshapes.absorbEmpty(c, r, [0, 1, 1, 1], [0.6, 0.4])
+    assert same[0].tolist() == [0, 1, 1, 1] and same[1].tolist() == [0.6, 0.4]

@@ -159,3 +159,29 @@ def test_a_sphere_piece_follows_the_sphere_model():
     other = clump.addClump((1, 1, 1), 0.02, O.bodies[members[1]].material)
     with pytest.raises(ValueError, match='is a clump; a crushed clump splits'):
         k.replace(other, None, True)
+
+
+def test_a_member_held_whole_by_another_goes_with_it_across_the_plane():
+    """A member inside another (a small sphere of the builder placed within the core) adds nothing to the union: the
+    clump is cut without it and it goes with the member that holds it, wherever the plane passes. Here the core
+    (R at the origin) and a tip (R/2 at 1.2 R) under tension along x: the plane normal to x through the centre of
+    mass (between them, 0 < X < 0.5 R) would put the small member (0.2 R at 0.5 R, inside the core) with the tip
+    and give it a piece of no volume of its own there; it goes with the core, the mass is kept."""
+    steel, mat = clumpScene()
+    spheres = [utils.sphere(x, r, material=mat) for x, r in (((0, 0, 0), R), ((1.2 * R, 0, 0), R / 2),
+                                                             ((0.5 * R, 0, 0), 0.2 * R))]
+    d, r2 = 1.2 * R, R / 2   # the union: core + tip - their lens (the small member adds nothing)
+    lens = math.pi * (R + r2 - d) ** 2 * (d * d + 2 * d * (R + r2) - 3 * (R - r2) ** 2) / (12 * d)
+    V = VS + 4 / 3 * math.pi * r2 ** 3 - lens
+    cid = clump.appendClump(spheres, V)
+    members = sorted(O.bodies[cid].shape.members.keys())
+    X = O.bodies[cid].state.pos[0]
+    assert 0 < X < 0.5 * R
+    O.engines = hertzEngines()
+    M = O.bodies[cid].state.mass
+    k = grainkinds.current()
+    rep = k.crush(cid, np.diag([1e6, 0, 0]), lambda: pytest.fail('a clump uses no sphere fragments'), False)
+    assert rep.split['pieces'] == 2
+    groups = sorted(sorted(O.bodies[i].shape.members.keys()) if O.bodies[i].isClump else [i] for i in rep.ids)
+    assert groups == [[members[0], members[2]], [members[1]]]
+    assert abs(sum(O.bodies[i].state.mass for i in rep.ids) / M - 1) < 1e-12

@@ -30,7 +30,7 @@ from yade.wrapper import Sphere
 from .. import _ballast, contacts, runtime
 from ..geometry import equivalentRadius, sphereVolume
 from . import GrainKind, Replaced, Resized, register
-from .clumpshapes import ELONGATION, FLATNESS, N_SPHERES, clumpMembers, pieceShares
+from .clumpshapes import ELONGATION, FLATNESS, N_SPHERES, absorbEmpty, clumpMembers, containers, pieceShares
 from .sphere import SphereKind
 from .clumpshapes import shellOutside
 
@@ -235,11 +235,17 @@ class ClumpKind(GrainKind):
         bodies = [O.bodies[m] for m in members]
         pos = np.array([tuple(b.state.pos) for b in bodies], dtype=float)
         radii = np.array([b.shape.radius for b in bodies], dtype=float)
-        cut = _ballast.clumpSplit(np.asarray(stress, dtype=float), tuple(st.pos), pos, radii)
-        piece, n = cut['piece'], cut['nPieces']
+        # members held whole by another add nothing to the union: cut without them, then put with their holders
+        holder = containers(pos, radii)
+        free = np.flatnonzero(holder < 0)
+        cut = _ballast.clumpSplit(np.asarray(stress, dtype=float), tuple(st.pos), pos[free], radii[free])
+        piece = np.empty(len(members), dtype=np.int64)
+        piece[free] = cut['piece']
+        piece[holder >= 0] = piece[holder[holder >= 0]]
         store = _store(create=True)
         V0 = store.volumes.pop(bid)
-        shares = pieceShares(pos, radii, piece, samples=SPLIT_SAMPLES)
+        piece, shares = absorbEmpty(pos, radii, piece, pieceShares(pos, radii, piece, samples=SPLIT_SAMPLES))
+        n = len(shares)
         O.bodies.erase(bid)   # its members stay, free (YADE's erase without eraseClumpMembers)
         ids = []
         for k in range(n):
@@ -268,8 +274,8 @@ class ClumpKind(GrainKind):
             b.state.densityScaling = scaling
             b.state.blockedDOFs = blocked
         # members of two pieces that still overlap (a shrunk free sphere may have parted): a contact without force
-        pairs = [[members[i], members[j]] for i, j in cut['pairs'].tolist()
-                 if (O.bodies[members[i]].state.pos - O.bodies[members[j]].state.pos).norm()
+        pairs = [[members[i], members[j]] for i, j in free[cut['pairs']].reshape(-1, 2).tolist() if piece[i] != piece[j]
+                 and (O.bodies[members[i]].state.pos - O.bodies[members[j]].state.pos).norm()
                  < O.bodies[members[i]].shape.radius + O.bodies[members[j]].shape.radius]
         for i, j in pairs:
             contacts.silence(utils.createInteraction(i, j))

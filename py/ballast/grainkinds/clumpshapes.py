@@ -64,6 +64,47 @@ def pieceShares(centres, radii, piece, samples=SAMPLES, seed=0):
     return each / hits
 
 
+def containers(centres, radii):
+    """For each sphere, the index of the sphere that holds it whole (r_i - |c_i - c_j| >= r_j; of several, the one
+    with the largest margin; of two equal spheres at one place, the first), -1 where none does. A sphere held whole
+    adds nothing to the union: it belongs with its holder wherever a plane cuts."""
+    c = np.asarray(centres, dtype=float).reshape(-1, 3)
+    r = np.asarray(radii, dtype=float).reshape(-1)
+    n = len(r)
+    margin = r[:, None] - np.linalg.norm(c[:, None, :] - c[None, :, :], axis=2) - r[None, :]   # [holder, held]
+    idx = np.arange(n)
+    bigger = (r[:, None] > r[None, :]) | ((r[:, None] == r[None, :]) & (idx[:, None] < idx[None, :]))
+    margin = np.where((margin >= 0) & bigger, margin, -np.inf)
+    holder = np.argmax(margin, axis=0)
+    out = np.where(np.isfinite(margin[holder, idx]), holder, -1)
+    for _ in range(n):   # a holder held itself (a tie of margins): up to the one nothing holds
+        up = np.where(out >= 0, out[np.maximum(out, 0)], -1)
+        if not np.any(up >= 0):
+            break
+        out = np.where(up >= 0, up, out)
+    return out
+
+
+def absorbEmpty(centres, radii, piece, shares):
+    """(piece, shares) with every piece of no share of the volume (its members lie wholly deeper in other pieces'
+    members, e.g. a small member inside the core: pieceShares gives it no point) absorbed: each of its members
+    joins the piece of the member of a piece with volume it lies deepest in (largest r_i - |x_j - c_i|); pieces
+    renumbered 0 ... k-1 in their order, shares of those kept. A piece of no volume would be a grain of no mass."""
+    piece = np.asarray(piece, dtype=np.int64).reshape(-1).copy()
+    shares = np.asarray(shares, dtype=float).reshape(-1)
+    keep = shares > 0
+    if keep.all():
+        return piece, shares
+    c = np.asarray(centres, dtype=float).reshape(-1, 3)
+    r = np.asarray(radii, dtype=float).reshape(-1)
+    hosts = np.flatnonzero(keep[piece])
+    for j in np.flatnonzero(~keep[piece]):
+        depth = r[hosts] - np.linalg.norm(c[hosts] - c[j], axis=1)
+        piece[j] = piece[hosts[int(np.argmax(depth))]]
+    new = np.cumsum(keep) - 1   # old piece -> new index (for the kept ones)
+    return new[piece], shares[keep]
+
+
 def shellOutside(centre, r, rNew, centres, radii, samples=SHELL_SAMPLES, seed=0):
     """(V [m^3], its standard error [m^3]) of the part of the shell rNew <= |x - centre| <= r outside every sphere
     (centres (n, 3), radii (n,); n may be 0): what the union of that sphere and those loses when the sphere shrinks
