@@ -134,7 +134,7 @@ ALL = NAMES + ('triaxial',)
 
 @pytest.mark.parametrize('name', ALL)
 @pytest.mark.parametrize('values,param,words', [
-    ({'grain': 'polyhedron'}, 'grain', "'sphere' or 'clump'"),
+    ({'grain': 'tetrahedron'}, 'grain', "'sphere', 'clump' or 'polyhedron'"),
     ({'grain': 'clump', 'clumpElongation': 0.0}, 'clumpElongation', 'a number in (0, 1]'),
     ({'grain': 'clump', 'clumpFlatness': 1.2}, 'clumpFlatness', 'a number in (0, 1]'),
     ({'grain': 'clump', 'clumpSpheres': 4}, 'clumpSpheres', 'an integer in [5, 200]'),

@@ -1,6 +1,7 @@
 """The YADE engines of the crushable-ballast model (Dubina & Eliáš, sections 2 and 3):
 :class:`BallastCrushEngine` (:mod:`.crush`) and :class:`BallastAbrasionEngine` (:mod:`.abrasion`) on
-the base :mod:`.base`; fatigue, what follows a replacement and the abrasion prefilter are components
+the base :mod:`.base`, and :class:`PolyhedronCrushEngine` (:mod:`.polyhedra`: polyhedron grains crushed by YADE's
+PolyhedraSplitter); fatigue, what follows a replacement and the abrasion prefilter are components
 (:mod:`.fatigue`, :mod:`.replacements`, :mod:`.prefilter`).
 
 Both are Python subclasses of YADE's ``PyRunner``: put them in ``O.engines`` after
@@ -12,8 +13,9 @@ from .. import runtime
 from .abrasion import BallastAbrasionEngine
 from .base import BallastEngine
 from .crush import BallastCrushEngine
+from .polyhedra import PolyhedronCrushEngine
 
-__all__ = ['BallastCrushEngine', 'BallastAbrasionEngine', 'BallastEngine', 'restore']
+__all__ = ['BallastCrushEngine', 'BallastAbrasionEngine', 'BallastEngine', 'PolyhedronCrushEngine', 'restore']
 
 
 def restore():

@@ -46,16 +46,21 @@ GRAINS = {
 # what a grain is (issue 47, docs/grains.md "Clumps in the experiments"): the paper's sphere or a clump of spheres
 GRAIN_KIND = 'sphere'   # the default, the paper's: its samples' store keys hold no entry of GRAIN
 GRAIN = {
-    'grain': Param(GRAIN_KIND, '-', "what a grain is: 'sphere' (one YADE sphere, the paper's) or 'clump' (a YADE clump "
+    'grain': Param(GRAIN_KIND, '-', "what a grain is: 'sphere' (one YADE sphere, the paper's), 'clump' (a YADE clump "
                    'of overlapping spheres shaped by the clump parameters, its volume-equivalent radius the cloud\'s '
-                   'radius; crushed, it splits); the same preparation and outputs', choice('sphere', 'clump'),
-                   "'sphere' or 'clump'", text),
+                   'radius; crushed, it splits) or \'polyhedron\' (one of YADE\'s convex polyhedra, its volumetric '
+                   'contact law, crushed by YADE\'s PolyhedraSplitter: the single-particle test and the oedometer only, '
+                   'for comparison; docs/grains.md); the same preparation and outputs',
+                   choice('sphere', 'clump', 'polyhedron'), "'sphere', 'clump' or 'polyhedron'", text),
     **CLUMP_SHAPE,
     'clumpTemplates': Param(20, '-', "with grain 'clump': clump shapes built from the seed for a sample, each grain one "
                             'of them scaled to its radius and turned at random (a shape costs about 1 s to build: its '
                             'union volume by Monte Carlo)', intBetween(1, 1000), 'an integer in [1, 1000]'),
 }
 GRAIN_SHAPE_KEYS = tuple(k for k in GRAIN if k != 'grain')
+# the measured cost of polyhedra that makes a box or a triaxial sample of them too slow (bench/bench_grains.py)
+POLYHEDRON_COST = 'over 37 ms a step for 300 grains, more than 100 times the spheres'
+
 
 
 def grainKey(p):
@@ -248,9 +253,37 @@ class ExperimentParameters(Parameters):
         if self['dMin'] >= self['dMax']:
             self.bad('dMin', 'must be smaller than dMax = %g' % self['dMax'])
 
+    # grain 'polyhedron' (docs/grains.md, "Polyhedra"): which experiments take it, and the options YADE's polyhedra and
+    # their PolyhedraSplitter have no counterpart for, with the one value each may take
+    POLYHEDRA = False   # an experiment that takes grain 'polyhedron' says so
+    POLYHEDRON_ONLY = (
+        ('m', 1.0, "PolyhedraSplitter's size law is ft0 / r_eq"),
+        ('criterion', 'vonMises', 'PolyhedraSplitter compares the von Mises stress'),
+        ('weibullModulus', 0.0, 'PolyhedraSplitter gives every grain the same strength'),
+        ('fatigue', False, 'PolyhedraSplitter has no fatigue damage'),
+        ('maxPerCheck', 0, 'PolyhedraSplitter splits every grain over its strength at once'),
+        ('keep', 'none', "PolyhedraSplitter's pieces are its own"),
+        ('pattern', 6, 'PolyhedraSplitter cuts a grain into four pieces by two planes, not into Fig. 1\'s spheres'),
+        ('abrasion', False, 'polyhedra are not abraded (eq. 7 is for spheres); give abrasion 0'),
+        ('law', 'linear', "polyhedra touch by YADE's volumetric law"),
+        ('rollingFriction', 0.0, "YADE's volumetric law has no rolling resistance"),
+        ('timeStep', 'pwave', 'the stiffness stepper reads the spheres\' laws'),
+        ('densityStep', 0.0, 'density scaling reads the spheres\' P-wave steps'),
+        ('quasiStatic', 0.0, 'density scaling reads the spheres\' P-wave steps'),
+    )
+
     def checkGrain(self):
         """The clump parameters only with grain 'clump' (elsewhere a value set would be lost), and a clump whose tips
-        reach its core (clumpshapes: clumpElongation clumpFlatness > 1/3)."""
+        reach its core (clumpshapes: clumpElongation clumpFlatness > 1/3); grain 'polyhedron' only where the
+        experiment takes it, without the options YADE's polyhedra have no counterpart for."""
+        if self['grain'] == 'polyhedron':
+            if not self.POLYHEDRA:
+                self.bad('grain', "polyhedra are offered in the single-particle test and the oedometer only: YADE's "
+                                  'polyhedra cost %s (docs/grains.md, "Polyhedra"); use sphere or clump'
+                         % POLYHEDRON_COST)
+            for k, allowed, why in self.POLYHEDRON_ONLY:
+                if k in self.PARAMS and self[k] != allowed:
+                    self.bad(k, "with grain = 'polyhedron' only %r: %s" % (allowed, why))
         if self['grain'] != 'clump':
             for k in GRAIN_SHAPE_KEYS:
                 if self[k] != GRAIN[k].default:

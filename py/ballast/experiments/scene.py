@@ -46,6 +46,46 @@ def materials(p, young):
     return ballast, steel
 
 
+def polyhedronModulus(p, young):
+    """The volumetric modulus Y [N/m^3] of YADE's PolyhedraMat for a Young's modulus young [Pa]: Y = young / r_ref with
+    r_ref = (dMin + dMax) / 4, the mean grain radius, so a grain of r_ref pressed face on over an area about r_ref^2
+    (Y r^2 / 2, the two moduli in series) is about as stiff as a sphere of the linear law (E r / 2 ... E r): the
+    choice of this comparison (docs/grains.md, "Polyhedra")."""
+    return young / ((p['dMin'] + p['dMax']) / 4)
+
+
+def polyhedronMaterials(p, young):
+    """(ballast, steel) for a polyhedron scene: YADE's PolyhedraMat (the volumetric law pairs only PolyhedraMat),
+    moduli polyhedronModulus of young and of steelYoungRatio young, the ballast split by YADE's PolyhedraSplitter
+    (strength ft0 / 1000: engines.polyhedra.yadeStrength), the steel never; appended to O.materials."""
+    from yade.wrapper import PolyhedraMat
+    from ..engines.polyhedra import yadeStrength
+    out = []
+    for label, E, nu, phi, rho, split in (
+            ('ballast', young, p['poisson'], p['friction'], p['density'], True),
+            ('steel', p['steelYoungRatio'] * young, p['steelPoisson'], p['steelFriction'], p['steelDensity'], False)):
+        m = PolyhedraMat()   # set one by one: the keyword constructor left young at 1e9 (measured)
+        m.young, m.poisson, m.frictionAngle, m.density, m.label = polyhedronModulus(p, E), nu, phi, rho, label
+        m.IsSplitable, m.strength = split, yadeStrength(p['ft0'])
+        O.materials.append(m)
+        out.append(m)
+    return tuple(out)
+
+
+def polyhedronEngines(damping, gravity=GRAVITY):
+    """ForceResetter, collider, the volumetric law between polyhedra and with facets and walls, Newton."""
+    from yade.wrapper import (Bo1_Polyhedra_Aabb, Ig2_Facet_Polyhedra_PolyhedraGeom, Ig2_Polyhedra_Polyhedra_PolyhedraGeom,
+                              Ig2_Wall_Polyhedra_PolyhedraGeom, Ip2_PolyhedraMat_PolyhedraMat_PolyhedraPhys,
+                              Law2_PolyhedraGeom_PolyhedraPhys_Volumetric)
+    return [
+        ForceResetter(),
+        InsertionSortCollider([Bo1_Polyhedra_Aabb(), Bo1_Facet_Aabb(), Bo1_Wall_Aabb()], avoidSelfInteractionMask=AVOID),
+        InteractionLoop([Ig2_Polyhedra_Polyhedra_PolyhedraGeom(), Ig2_Facet_Polyhedra_PolyhedraGeom(),
+                         Ig2_Wall_Polyhedra_PolyhedraGeom()], [Ip2_PolyhedraMat_PolyhedraMat_PolyhedraPhys()],
+                        [Law2_PolyhedraGeom_PolyhedraPhys_Volumetric()]),
+        NewtonIntegrator(damping=damping, gravity=gravity, label='newton')]
+
+
 def engines(damping, law, rollingResistance=False):
     """ForceResetter, collider, interaction loop with the contact law, Newton with gravity. With rolling
     resistance (linear law only) grain pairs get ScGeom6D and CohFrictPhys with the moment law; contacts

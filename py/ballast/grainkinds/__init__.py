@@ -1,6 +1,7 @@
 """Grain kinds: what a grain is, asked by every piece of the package that reads or changes grains
 (issue 44, item 3). Two kinds: :mod:`.sphere` (a grain is one YADE ``Sphere``, the paper's) and
-:mod:`.clump` (a grain is a YADE clump of overlapping spheres shaped like ballast, issue 47); each is a
+:mod:`.clump` (a grain is a YADE clump of overlapping spheres shaped like ballast, issue 47) and :mod:`.polyhedron`
+(a grain is one of YADE's convex polyhedra, crushed by its PolyhedraSplitter: issue 47, item 4); each is a
 module here, registered with :func:`register`.
 
 The interface (:class:`GrainKind`) answers, for the grains of the current scene:
@@ -33,7 +34,7 @@ and cannot be lost. The kind is looked up again only when the scene changes (``r
 from collections import namedtuple
 
 import numpy as np
-from yade import O
+from yade import O, utils
 
 from .. import runtime
 from ..geometry import equivalentRadius
@@ -109,6 +110,10 @@ class GrainKind:
     def vtkRadii(self, ids):
         """The radius VTK draws a grain with [m]: r_eq."""
         return self.radii(ids)
+
+    def pWaveTimeStep(self):
+        """Eq. 5's critical step [s] of the scene's grains: YADE's PWaveTimeStep() (spheres, clump members)."""
+        return utils.PWaveTimeStep()
 
     def signature(self):
         """A value compared for equality (C++, no loop in Python) that changes when a grain is added, erased or
@@ -228,6 +233,7 @@ def use(name):
 
 from . import sphere  # noqa: E402  (the kinds register themselves; they need the interface above)
 from . import clump  # noqa: E402
+from . import polyhedron  # noqa: E402
 
 __all__ = ['DEFAULT', 'GrainKind', 'Replaced', 'Resized', 'SceneKind', 'clump', 'current', 'kind', 'names',
-           'register', 'sphere', 'use']
+           'polyhedron', 'register', 'sphere', 'use']

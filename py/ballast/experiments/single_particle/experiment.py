@@ -25,7 +25,7 @@ from yade import O, Vector3, utils
 from yade.wrapper import (Bo1_Box_Aabb, Bo1_Sphere_Aabb, ForceResetter, Ig2_Box_Sphere_ScGeom,
                           Ig2_Sphere_Sphere_ScGeom, InsertionSortCollider, InteractionLoop, NewtonIntegrator)
 
-from ... import runtime
+from ... import grainkinds, runtime
 from ...engines import BallastCrushEngine
 from ..base import Experiment
 from ..clumpsample import ClumpSample
@@ -37,6 +37,40 @@ PITCH = 1.5            # [-] grains' centres this many dMax apart
 PLATEN_HALF = 0.6      # [-] half-width of a square platen over the grain's diameter
 PLATEN_THICKNESS = 0.01  # [m]
 CURVE_EVERY = 10       # [steps] between rows of a grain's F-displacement curve
+
+
+def lying(v, turn):
+    """Vertices v ((n, 3) [m], a convex polyhedron about the origin) turned so that its largest face lies on z = 0 and
+    the grain above it, then turned by turn [rad] about z through its centroid's vertical."""
+    from scipy.spatial import ConvexHull
+    hull = ConvexHull(v)
+    a, b, c = (v[hull.simplices[:, i]] for i in range(3))
+    area = np.linalg.norm(np.cross(b - a, c - a), axis=1)
+    n = hull.equations[int(np.argmax(area)), :3]   # its outward normal: to -z
+    R = rotationOnto(n, np.array([0.0, 0.0, -1.0]))
+    w = v @ R.T
+    cz, sz = math.cos(turn), math.sin(turn)
+    w = w @ np.array([[cz, -sz, 0], [sz, cz, 0], [0, 0, 1]]).T
+    return w - (0, 0, float(np.min(w[:, 2])))
+
+
+def rotationOnto(a, b):
+    """The rotation matrix taking the unit vector a onto the unit vector b (Rodrigues)."""
+    k = np.cross(a, b)
+    s, c = np.linalg.norm(k), float(np.dot(a, b))
+    if s < 1e-12:
+        return np.eye(3) if c > 0 else np.diag([1.0, -1.0, -1.0])
+    k = k / s
+    K = np.array([[0, -k[2], k[1]], [k[2], 0, -k[0]], [-k[1], k[0], 0]])
+    return np.eye(3) + s * K + (1 - c) * K @ K
+
+
+def platen(x, z, reach, steel, up):
+    """A fixed steel facet in the plane z [m] at (x, 0): an equilateral triangle whose inscribed circle, of radius
+    1.5 reach [m], holds the grain's footprint; up: its face towards +z (the bottom platen)."""
+    R = 3 * reach   # circumradius: twice the inscribed circle's radius
+    pts = [Vector3(x + R * math.cos(t), R * math.sin(t), z) for t in (math.pi / 2, math.pi * 7 / 6, math.pi * 11 / 6)]
+    return utils.facet(pts if up else pts[::-1], material=steel, fixed=True, mask=STEEL_MASK)
 
 
 @runtime.persistent('SingleParticleTester')
@@ -143,6 +177,8 @@ class SingleParticle(Experiment):
                      NewtonIntegrator(damping=p['damping'], gravity=(0, 0, 0))]
         d = self.diameters()
         self.tester = tester = Tester(p['speed'], p['maxStrain'])
+        if p['grain'] == 'polyhedron':
+            return self.preparePolyhedra(d)
         if p['grain'] == 'clump':
             place, pitch = self.clumps(d, ballast)
         else:
@@ -170,6 +206,42 @@ class SingleParticle(Experiment):
         self.adopt()
         self.startTimeStep(None)   # the platens are kinematic: only the grains move under Newton
         self.say('prepared %d grains of %.1f-%.1f mm, platens closing at %g m/s, dt = %.3g s' % (
+            len(d), 1e3 * d.min(), 1e3 * d.max(), p['speed'], O.dt))
+        return self
+
+    def preparePolyhedra(self, d):
+        """With grain 'polyhedron' (docs/grains.md, "Polyhedra"): grain k a random polyhedron of r_eq d/2
+        (grainkinds.polyhedron.randomVertices, seed [seed, k]) lying on its largest face, turned at random about z,
+        between two steel facets (triangles whose inscribed circle holds the grain) at its lowest and highest points;
+        YADE's volumetric law, and YADE's PolyhedraSplitter crushing it (engines.PolyhedronCrushEngine)."""
+        from ...engines import PolyhedronCrushEngine
+        from ...grainkinds.polyhedron import addPolyhedron, randomVertices
+        from ..scene import polyhedronEngines, polyhedronMaterials
+        p, tester = self.p, self.tester
+        ballast, steel = polyhedronMaterials(p, p['young'])
+        O.engines = polyhedronEngines(p['damping'], gravity=(0, 0, 0))
+        rng = np.random.default_rng(p['seed'])
+        shapes = [lying(randomVertices(dk / 2, [p['seed'], k]), rng.uniform(0, 2 * math.pi)) for k, dk in enumerate(d)]
+        # a platen's bounding box (0.87 of its circumradius, 3 reach, on either side) clear of the next grain's: a facet
+        # paired with a polyhedron it does not touch crashed YADE's Ig2_Facet_Polyhedra in this build (measured)
+        pitch = 4 * max(float(np.max(np.linalg.norm(v[:, :2], axis=1))) for v in shapes)
+        for k, v in enumerate(shapes):
+            x = k * pitch
+            h = float(np.max(v[:, 2]))
+            reach = float(np.max(np.linalg.norm(v[:, :2], axis=1)))
+            tester.grain.append(addPolyhedron(v + (x, 0, 0), ballast, mask=GRAIN_MASK))
+            tester.bottom.append(O.bodies.append(platen(x, 0.0, reach, steel, up=True)))
+            tester.top.append(O.bodies.append(platen(x, h, reach, steel, up=False)))
+        tester.d, tester.result = [float(x) for x in d], [None] * len(d)
+        crush = PolyhedronCrushEngine(ft0=p['ft0'], rMin=p['rMin'], seed=p['seed'], adjustDt=False, label='crush',
+                                      **p.crushPeriod())
+        crush.floor()
+        O.engines = O.engines + [runtime.callback(tester, 'measure', iterPeriod=1, label='singleParticleForces')] + \
+            crush.engines() + [runtime.callback(tester, 'step', iterPeriod=1, label='singleParticleTester')]
+        O.dt = p['dtSafety'] * grainkinds.current().pWaveTimeStep()
+        self.adopt()
+        self.startTimeStep(None)
+        self.say('prepared %d polyhedra of %.1f-%.1f mm (volume-equivalent), platens closing at %g m/s, dt = %.3g s' % (
             len(d), 1e3 * d.min(), 1e3 * d.max(), p['speed'], O.dt))
         return self
 

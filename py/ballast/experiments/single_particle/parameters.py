@@ -45,6 +45,7 @@ class SingleParticleParameters(ExperimentParameters):
     """The test's checked parameters (frozen) and what follows from them."""
 
     OWNER, PARAMS = OWNER, PARAMS
+    POLYHEDRA = True   # grain 'polyhedron' too (docs/grains.md, "Polyhedra")
 
     def grainCount(self):
         return len(self['diameters']) or self['n']
