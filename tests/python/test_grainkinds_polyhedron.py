@@ -178,8 +178,7 @@ def test_single_particle_test_crushes_a_polyhedron_and_its_pieces_keep_the_mass(
     ('single_particle', {'grain': 'polyhedron', 'weibullModulus': 3}, 'weibullModulus'),
     ('single_particle', {'grain': 'polyhedron', 'm': 0.5}, 'm'),
     ('single_particle', {'grain': 'polyhedron', 'criterion': 'majorPrincipal'}, 'criterion'),
-    ('oedometer', {'grain': 'polyhedron'}, 'abrasion'),
-    ('oedometer', {'grain': 'polyhedron', 'abrasion': False, 'fatigue': True}, 'fatigue'),
+    ('oedometer', {'grain': 'polyhedron', 'abrasion': False}, 'grain'),   # not built yet (docs/grains.md)
     ('box', {'grain': 'polyhedron'}, 'grain'),
     ('triaxial', {'grain': 'polyhedron'}, 'grain'),
 ])
@@ -195,6 +194,4 @@ def test_refused_before_any_work_in_one_line(name, values, bad):
 def test_taken_where_offered():
     from ballast.experiments import declaration
     p = declaration('single_particle').check({'grain': 'polyhedron'})
-    assert p['grain'] == 'polyhedron'
-    p = declaration('oedometer').check({'grain': 'polyhedron', 'abrasion': False})
     assert p['grain'] == 'polyhedron'

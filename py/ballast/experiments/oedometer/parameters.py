@@ -112,7 +112,6 @@ class OedometerParameters(ExperimentParameters):
     """The oedometer's checked parameters (frozen) and what follows from them."""
 
     OWNER, PARAMS = OWNER, PARAMS
-    POLYHEDRA = True   # grain 'polyhedron' too (docs/grains.md, "Polyhedra")
 
     @property
     def T(self):
