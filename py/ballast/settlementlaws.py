@@ -40,6 +40,12 @@ def bedChanged(crushes, abrasions=0, totals=False):
     return n > 0
 
 
+def cyclesChanged(frame):
+    """Whether a grain crushed or abraded in each cycle of a cycles.csv table (its crushes and abrasions columns):
+    bedChanged, for the experiments and the analyses alike (no YADE needed to read a record)."""
+    return bedChanged(frame.crushes.to_numpy(), frame.abrasions.to_numpy())
+
+
 def recentHalf(n):
     """The first row (1-based) of the recent half of n simulated cycles, ceil(n / 2): the law the bed follows now
     (a bed that settled fast and then stopped has b = 0 there, not the b of its first cycles)."""

@@ -13,8 +13,7 @@ import numpy as np
 import pandas as pd
 
 from ..experiments.triaxial.strains import atCycles, readReference
-from ..experiments.cyclic import changed
-from ..settlementlaws import settlementJumped
+from ..settlementlaws import cyclesChanged as changed, settlementJumped
 from .settlement import realizationRuns
 
 

@@ -43,7 +43,7 @@ from yade import O
 
 from .. import runtime
 from ..runfiles import writeAtomic
-from ..settlementlaws import bedChanged, settlementJumped
+from ..settlementlaws import cyclesChanged as changed, settlementJumped
 from . import chain, grains, timestep
 from .cyclejump import CycleJumper
 
@@ -57,11 +57,6 @@ SAVER = 'cycleSaver'                     # the label of the checkpoint callback,
 JUMP_STATE = 'state-jump%04d-%s.yade.gz'   # the states around jump k: 'before' and 'after' it
 JUMP_STATE_NAME = re.compile(r'state-jump(\d+)-(?:before|after)\.yade\.gz')   # the same names, read back
 JUMPER = 'cycleJumper'   # the label of the callback that makes a planned jump
-
-
-def changed(frame):
-    """Whether a grain crushed or abraded in each cycle (settlementlaws.bedChanged: the bed the laws fit changed)."""
-    return bedChanged(frame.crushes.to_numpy(), frame.abrasions.to_numpy())
 
 
 def table(rows, own=(), jumper=None, choice=None):

@@ -1,0 +1,83 @@
+"""What a study's realizations say at chosen cycles, condition by condition (issue 46, item 4: the prediction
+table). A condition is the runs that share the values of the parameters named (`by`: confining, qMax, f, ...),
+its realizations their seeds, a realization run in slices read from its last slice (settlement.realizationRuns).
+Per realization and cycle N: each quantity's total at N (a strain with its jumped cycles' share,
+curvefit.total), the breakage index BBI of the last grading taken at or before N, or, for a specimen that failed
+(summary.json stoppedBy failure) before N, the cycle it failed in. Per condition and N: how many seeds reached N and
+failed before it, and each quantity's mean, smallest and largest over those that reached it. Any cyclic experiment
+(the shared cycles.csv); NumPy, pandas, no YADE."""
+import math
+
+import numpy as np
+import pandas as pd
+
+from .curvefit import total
+from .settlement import realizationRuns
+
+
+def realizationTable(paths, by, quantities, at):
+    """A row per realization and cycle of `at` it reached or failed before: condition, runId, seed, cycle, each of
+    `quantities` (NaN where it failed), BBI (NaN without a grading by then), failedInCycle (NaN where it did not
+    fail by then). ValueError naming a quantity a run did not write."""
+    rows = []
+    for label, run, c in realizationRuns(paths, by):
+        missing = [q for q in quantities if q not in c]
+        if missing:
+            raise ValueError('conditions: %s wrote no %s in cycles.csv; it has %s' % (
+                run.runId, ', '.join(missing), ', '.join(c.columns)))
+        totals = {q: total(c, q) for q in quantities}
+        failed = (run.summary or {}).get('failedInCycle')
+        grading = run.table('grading')
+        for N in at:
+            hit = np.flatnonzero(c['cycle'].to_numpy() == N)
+            lost = failed is not None and failed <= N
+            if not len(hit) and not lost:
+                continue   # not reached (yet)
+            row = {'condition': label, 'runId': run.runId, 'seed': run.params.get('seed'), 'cycle': int(N),
+                   'failedInCycle': float(failed) if lost else math.nan}
+            row.update({q: float(totals[q][hit[0]]) if len(hit) and not lost else math.nan for q in quantities})
+            graded = grading[grading['cycle'] <= N] if grading is not None and 'BBI' in grading else []
+            row['BBI'] = float(graded['BBI'].iloc[-1]) if len(graded) else math.nan
+            rows.append(row)
+    if not rows:
+        raise ValueError('conditions: no run of %s reached the cycles %s' % (', '.join(paths), ' '.join(map(str, at))))
+    return pd.DataFrame(rows)
+
+
+def conditionTable(frame, quantities):
+    """A row per condition and cycle: seeds (how many reached it), failed (how many failed before it, with the
+    cycles they failed in), and per quantity (and BBI) the mean, smallest and largest over the seeds that reached
+    it."""
+    rows = []
+    for (label, N), g in frame.groupby(['condition', 'cycle'], sort=False):
+        ok = g[g['failedInCycle'].isna()]
+        lost = g[g['failedInCycle'].notna()]
+        row = {'condition': label, 'cycle': int(N), 'seeds': len(ok), 'failed': len(lost),
+               'failedInCycles': ' '.join('%d' % k for k in sorted(lost['failedInCycle'])) if len(lost) else ''}
+        for q in list(quantities) + ['BBI']:
+            v = ok[q].to_numpy(float)
+            row.update({q + '_mean': float(np.mean(v)) if len(v) else math.nan,
+                        q + '_min': float(np.min(v)) if len(v) else math.nan,
+                        q + '_max': float(np.max(v)) if len(v) else math.nan})
+        rows.append(row)
+    return pd.DataFrame(rows)
+
+
+def markdown(table, quantities, scale=100.0, unit='%'):
+    """The condition table as a Markdown table: a row per condition and cycle, each quantity as mean [min, max]
+    times `scale` (in `unit`), BBI as mean [min, max], and the seeds that failed before that cycle."""
+    head = ['condition', 'N', 'seeds'] + ['%s [%s]' % (q, unit) for q in quantities] + ['BBI', 'failed before N']
+    lines = ['| ' + ' | '.join(head) + ' |', '|' + '---|' * len(head)]
+
+    def cell(row, q, k):
+        if not row['seeds']:
+            return '-'
+        m, lo, hi = (row[q + s] * k for s in ('_mean', '_min', '_max'))
+        return '%.3g [%.3g, %.3g]' % (m, lo, hi) if row['seeds'] > 1 else '%.3g' % m
+    for row in table.to_dict('records'):
+        failed = '%d (in cycle %s)' % (row['failed'], row['failedInCycles'].replace(' ', ', ')) if row['failed'] else ''
+        name = row['condition'].partition('[')[2].rstrip(']') or row['condition']   # the values, not the path
+        lines.append('| ' + ' | '.join([name, str(row['cycle']), str(row['seeds'])] +
+                                        [cell(row, q, scale) for q in quantities] + [cell(row, 'BBI', 1.0), failed]) +
+                     ' |')
+    return '\n'.join(lines) + '\n'

@@ -1,0 +1,83 @@
+"""ballast.analysis.conditions and scripts/conditions.py: a study's realizations at chosen cycles, condition by
+condition, worked out by hand on fabricated records (no YADE): totals with the jumped cycles' share, the mean,
+smallest and largest over the seeds, BBI of the last grading by then, failures counted and not averaged; and
+scripts/curve_fit.py and scripts/conditions.py run without YADE, as the docs run them."""
+import json
+import math
+import os
+import subprocess
+import sys
+
+import pandas as pd
+import pytest
+
+from ballast.analysis import conditions
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+SCRIPT = os.path.join(HERE, '..', '..', 'scripts', 'conditions.py')
+
+
+def records(root, runs):
+    """Records with one run per {runId: (seed, confining, [axialStrain per cycle], axialStrainJumped or None,
+    failedInCycle or None, [(cycle, BBI)])}."""
+    rows = []
+    for k, (rid, (seed, p, values, jumped, failed, bbi)) in enumerate(runs.items()):
+        d = os.path.join(root, 'runs', rid)
+        os.makedirs(d)
+        summary = {'params': {'seed': seed, 'confining': p, 'continueFrom': ''}}
+        if failed:
+            summary.update(stoppedBy='failure', failedInCycle=failed)
+        with open(os.path.join(d, 'summary.json'), 'w') as fh:
+            json.dump(summary, fh)
+        frame = pd.DataFrame({'cycle': range(1, len(values) + 1), 'settlement': 0.0, 'crushes': 0, 'abrasions': 0,
+                              'axialStrain': values})
+        if jumped is not None:
+            frame['axialStrainJumped'] = jumped
+        frame.to_csv(os.path.join(d, 'cycles.csv'), index=False)
+        pd.DataFrame(bbi, columns=['cycle', 'BBI']).to_csv(os.path.join(d, 'grading.csv'), index=False)
+        rows.append({'line': k + 2, 'runId': rid, 'row': {'seed': str(seed)}})
+    with open(os.path.join(root, 'study.json'), 'w') as fh:
+        json.dump({'experiment': 'triaxial', 'rows': rows}, fh)
+    return str(root)
+
+
+RUNS = {'a1': (1, 60e3, [0.01, 0.02, 0.03], None, None, [(0, 0.0), (2, 0.004)]),
+        'a2': (2, 60e3, [0.02, 0.03, 0.05], [0.0, 0.0, 0.01], None, [(0, 0.0), (1, 0.002), (3, 0.008)]),
+        'b1': (1, 10e3, [0.09], None, 2, [(0, 0.0), (1, 0.001)]),
+        'b2': (2, 10e3, [0.05, 0.08, 0.12], None, None, [(0, 0.0)])}
+
+
+def test_per_seed_and_per_condition_by_hand(tmp_path):
+    root = records(tmp_path / 'p', RUNS)
+    seeds = conditions.realizationTable([root], ['confining'], ['axialStrain'], [1, 3])
+    a2 = seeds[seeds.runId == 'a2'].set_index('cycle')
+    assert a2.axialStrain[3] == pytest.approx(0.06) and a2.BBI[3] == 0.008 and a2.BBI[1] == 0.002   # with its jump
+    b1 = seeds[seeds.runId == 'b1'].set_index('cycle')
+    assert b1.axialStrain[1] == 0.09 and math.isnan(b1.failedInCycle[1])
+    assert math.isnan(b1.axialStrain[3]) and b1.failedInCycle[3] == 2   # failed before N: counted, not a value
+    table = conditions.conditionTable(seeds, ['axialStrain']).set_index(['condition', 'cycle'])
+    a = table.loc[(root + '[confining=60000]', 3)]
+    assert a.seeds == 2 and a.failed == 0
+    assert a.axialStrain_mean == pytest.approx((0.03 + 0.06) / 2) and a.axialStrain_min == 0.03
+    assert a.axialStrain_max == pytest.approx(0.06) and a.BBI_mean == pytest.approx((0.004 + 0.008) / 2)
+    b = table.loc[(root + '[confining=10000]', 3)]
+    assert b.seeds == 1 and b.failed == 1 and b.failedInCycles == '2' and b.axialStrain_mean == 0.12
+    text = conditions.markdown(table.reset_index(), ['axialStrain'])
+    assert '| confining=60000 | 3 | 2 | 4.5 [3, 6] | 0.006 [0.004, 0.008] |  |' in text
+    assert '| confining=10000 | 3 | 1 | 12 | 0 | 1 (in cycle 2) |' in text
+
+
+def test_the_scripts_run_without_yade_and_refuse_a_missing_quantity(tmp_path):
+    root = records(tmp_path / 'p', RUNS)
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join(p for p in sys.path if 'yade' not in p))
+    ok = subprocess.run([sys.executable, SCRIPT, root, '--by', 'confining', '--at', '1', '--out', str(tmp_path / 'o'),
+                         '--quantities', 'axialStrain'], capture_output=True, text=True, env=env)
+    assert ok.returncode == 0, ok.stderr
+    assert len(pd.read_csv(tmp_path / 'o' / 'conditions.csv')) == 2
+    bad = subprocess.run([sys.executable, SCRIPT, root, '--by', 'confining', '--out', str(tmp_path / 'o'),
+                          '--quantities', 'volumetricStrain'], capture_output=True, text=True, env=env)
+    assert bad.returncode == 2 and bad.stderr.count('\n') == 1 and 'wrote no volumetricStrain' in bad.stderr
+    fit = subprocess.run([sys.executable, os.path.join(HERE, '..', '..', 'scripts', 'curve_fit.py'), root, '--curve',
+                          'axialStrain=' + str(tmp_path / 'none.csv'), '--out', str(tmp_path / 'f')],
+                         capture_output=True, text=True, env=env)
+    assert fit.returncode == 2 and 'No module named' not in fit.stderr, fit.stderr
