@@ -18,6 +18,9 @@ new radius, keeping its tangential force (its history):
 * any other IPhys: the contact's physics is dropped and YADE's own functor creates it afresh at the
   next step (its tangential force restarts from zero).
 
+A contact silenced by :func:`silence` (every stiffness 0: two pieces of a split clump still overlapping) keeps
+its zero stiffness: at the new radius it would press the pieces apart by their whole overlap (issue 47).
+
 It acts on one sphere body: a grain kind (ballast.grainkinds) calls it for each sphere it resized (the
 sphere kind: the grain itself). A partner's side is judged by its shape, as YADE's Ig2 functors judge it:
 a Sphere (a grain, a clump member, a grid node) has a reference radius of its own.
@@ -55,7 +58,9 @@ def resize(bid, rOld, rNew):
         partnerNew = partnerOld if isinstance(other.shape, Sphere) else partnerOld * factor
         g.refR1, g.refR2 = (rNew, partnerNew) if mine1 else (partnerNew, rNew)
         kind = type(p).__name__
-        if kind == 'FrictPhys':
+        if silenced(p):
+            pass   # two pieces of a split clump still overlapping: stiffness at the new radius would press them apart
+        elif kind == 'FrictPhys':
             m1, m2 = O.bodies[i.id1].material, O.bodies[i.id2].material
             Ra, Rb = _pair(g.refR1, g.refR2)
             p.kn, p.ks = frictPhysStiffness(m1.young, m1.poisson, Ra, m2.young, m2.poisson, Rb)
@@ -73,6 +78,12 @@ def resize(bid, rOld, rNew):
 # stiffness attributes of YADE's IPhys classes the package's laws use: FrictPhys (kn, ks), MindlinPhys (kno, kso and
 # the current kn, ks), CohFrictPhys (kn, ks, kr, ktw)
 _STIFFNESS = ('kn', 'ks', 'kno', 'kso', 'kr', 'ktw')
+
+
+def silenced(phys):
+    """Whether a contact's physics was silenced (:func:`silence`): it has stiffness attributes and all are 0."""
+    ks = [getattr(phys, k) for k in _STIFFNESS if hasattr(phys, k)]
+    return bool(ks) and not any(ks)
 
 
 def silence(i):

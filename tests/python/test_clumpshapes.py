@@ -77,3 +77,13 @@ def test_a_piece_of_no_volume_joins_the_piece_its_members_lie_deepest_in():
     assert piece.tolist() == [0, 1, 0, 1] and shares.tolist() == [0.7, 0.3]
     same = clumpshapes.absorbEmpty(c, r, [0, 1, 1, 1], [0.6, 0.4])
     assert same[0].tolist() == [0, 1, 1, 1] and same[1].tolist() == [0.6, 0.4]
+
+
+def test_cross_pairs_are_the_overlapping_spheres_of_different_pieces():
+    """Spheres of radius 1 on the x axis at 0, 1.5, 3 and 5 (neighbours 1.5 apart overlap, 2 apart touch only) in
+    pieces 0, 0, 1, 1: (1, 2) overlaps across the pieces; (0, 1) and (2, 3) are in one piece; (2, 3) only touches."""
+    from ballast.grainkinds.clumpshapes import crossPairs
+    c = [(0, 0, 0), (1.5, 0, 0), (3, 0, 0), (5, 0, 0)]
+    assert crossPairs(c, [1, 1, 1, 1], [0, 0, 1, 1]).tolist() == [[1, 2]]
+    assert crossPairs(c, [1, 1, 1, 1], [0, 1, 0, 1]).tolist() == [[0, 1], [1, 2]]
+    assert crossPairs(c, [1, 1, 1, 1], [0, 0, 0, 0]).shape == (0, 2)

@@ -85,6 +85,19 @@ def containers(centres, radii):
     return out
 
 
+def crossPairs(centres, radii, piece):
+    """(k, 2) indices (i < j) of the spheres that overlap (|c_i - c_j| < r_i + r_j) and lie in different pieces. Taken
+    over every member of a split clump with its final pieces: a member held whole by another, or moved by absorbEmpty,
+    is cut without the planes' own pairs, and an overlap of it with another piece left as an ordinary contact would
+    be a spring pressed by up to its whole radius (issue 47: the clump box's explosion)."""
+    c = np.asarray(centres, dtype=float).reshape(-1, 3)
+    r = np.asarray(radii, dtype=float).reshape(-1)
+    piece = np.asarray(piece, dtype=np.int64).reshape(-1)
+    d = np.linalg.norm(c[:, None, :] - c[None, :, :], axis=2)
+    i, j = np.nonzero(np.triu((d < r[:, None] + r[None, :]) & (piece[:, None] != piece[None, :]), 1))
+    return np.stack([i, j], axis=1)
+
+
 def absorbEmpty(centres, radii, piece, shares):
     """(piece, shares) with every piece of no share of the volume (its members lie wholly deeper in other pieces'
     members, e.g. a small member inside the core: pieceShares gives it no point) absorbed: each of its members
