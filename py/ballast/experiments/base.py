@@ -33,7 +33,7 @@ import time
 from yade import O
 
 from .. import grainkinds, runtime
-from ..engines import BallastAbrasionEngine, BallastCrushEngine
+from ..engines import BallastAbrasionEngine, BallastCrushEngine, PolyhedronCrushEngine
 from ..names import runDirName
 from ..engineparams import CRUSH
 from ..params import ParamError, requireWritableDir
@@ -128,12 +128,17 @@ class Experiment:
             # every engine parameter the experiment declares (its PARAMS reuse CRUSH's declarations);
             # the engine scales O.dt with the drop of PWaveTimeStep() after a replacement (eq. 5)
             own = {k: p[k] for k in CRUSH if k in p}
-            crush = BallastCrushEngine(mask=0, label='crush', scaledPWaveStep=p.scaledPWaveStep(), **p.crushPeriod(),
-                                       **own)
+            if p.get('grain') == 'polyhedron':   # YADE's PolyhedraSplitter, woken and booked by the engine
+                crush = PolyhedronCrushEngine(mask=0, label='crush', scaledPWaveStep=p.scaledPWaveStep(),
+                                              **p.crushPeriod(), **own)
+                crush.floor()
+            else:
+                crush = BallastCrushEngine(mask=0, label='crush', scaledPWaveStep=p.scaledPWaveStep(), **p.crushPeriod(),
+                                           **own)
             # checks at loading times k T_c (not at scene times, which include the preparation): where they fall
             # in the load cycle is then set by T_c and f alone (docs/oedometer.md, "Crushing period")
             crush.virtLast = t0
-            extra.append(crush)
+            extra.extend(crush.engines() if isinstance(crush, PolyhedronCrushEngine) else [crush])
         if p['abrasion']:
             extra.append(BallastAbrasionEngine(strength=p['strength'], gamma=p['gamma'], rMin=p['rMin'], mask=0,
                                                iterPeriod=p['abrasionPeriod'], scaledPWaveStep=p.scaledPWaveStep(),

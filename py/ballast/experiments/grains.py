@@ -40,6 +40,13 @@ def arrays():
     return k.centres(ids), k.radii(ids), k.masses(ids)
 
 
+def top():
+    """The height of the grains' highest point [m] (the kind's: for a sphere its centre plus its radius, for a
+    polyhedron its highest vertex), where a plate is seated."""
+    k = kind()
+    return float(np.max(k.tops(k.ids())))
+
+
 def volumes():
     """Volumes [m^3] of the grains, O.bodies order."""
     k = kind()

@@ -49,8 +49,8 @@ GRAIN = {
     'grain': Param(GRAIN_KIND, '-', "what a grain is: 'sphere' (one YADE sphere, the paper's), 'clump' (a YADE clump "
                    'of overlapping spheres shaped by the clump parameters, its volume-equivalent radius the cloud\'s '
                    'radius; crushed, it splits) or \'polyhedron\' (one of YADE\'s convex polyhedra, its volumetric '
-                   'contact law, crushed by YADE\'s PolyhedraSplitter: the single-particle test only, for comparison; '
-                   'docs/grains.md); the same preparation and outputs',
+                   'contact law, crushed by YADE\'s PolyhedraSplitter: the single-particle test and the oedometer, for '
+                   'comparison; docs/grains.md); the same preparation and outputs',
                    choice('sphere', 'clump', 'polyhedron'), "'sphere', 'clump' or 'polyhedron'", text),
     **CLUMP_SHAPE,
     'clumpTemplates': Param(20, '-', "with grain 'clump': clump shapes built from the seed for a sample, each grain one "
@@ -59,7 +59,7 @@ GRAIN = {
 }
 GRAIN_SHAPE_KEYS = tuple(k for k in GRAIN if k != 'grain')
 # the measured cost of polyhedra that makes a box or a triaxial sample of them too slow (bench/bench_grains.py)
-POLYHEDRON_COST = '140 us a grain-step, 363 times the spheres (bench/grains.json), about 30 h of CPU an oedometer'
+POLYHEDRON_COST = '140 us a grain-step, 363 times the spheres (bench/grains.json), about 30 h of CPU a 300-grain oedometer'
 
 
 
@@ -278,7 +278,8 @@ class ExperimentParameters(Parameters):
         experiment takes it, without the options YADE's polyhedra have no counterpart for."""
         if self['grain'] == 'polyhedron':
             if not self.POLYHEDRA:
-                self.bad('grain', "polyhedra are offered in the single-particle test only: YADE's polyhedra cost %s "
+                self.bad('grain', "polyhedra are offered in the single-particle test and the oedometer only: YADE's "
+                                  "polyhedra cost %s "
                                   '(docs/grains.md, "Polyhedra"); use sphere or clump' % POLYHEDRON_COST)
             for k, allowed, why in self.POLYHEDRON_ONLY:
                 if k in self.PARAMS and self[k] != allowed:

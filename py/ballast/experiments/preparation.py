@@ -3,7 +3,7 @@ StoredPacking, the box test's bed): friction restored after a frictionless depos
 stiffened from the soft preparation modulus to the true one without a kick."""
 import math
 
-from yade import O, utils
+from yade import O
 
 from .. import runtime
 from . import chain, grains
@@ -63,7 +63,7 @@ class Stiffener:
         p = exp.p
         for mat, young in moduli:
             mat.young = young
-        O.dt = PREP_DT_SAFETY * utils.PWaveTimeStep()
+        O.dt = PREP_DT_SAFETY * grains.kind().pWaveTimeStep()   # YADE's PWaveTimeStep() but for polyhedra
         if ratio <= 1:
             return
         newton = chain.newton()

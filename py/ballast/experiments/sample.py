@@ -21,9 +21,9 @@ from yade import O, Vector3, pack, utils
 
 from ..geometry import meanCubedDiameterVolume, sphereVolume
 from ..runfiles import writeAtomic
-from . import grains, preparation
+from . import grains, polyhedronsample, preparation
 from .clumpsample import ClumpSample
-from .scene import GRAIN_MASK, STEEL_MASK, engines, rolling
+from .scene import GRAIN_MASK, STEEL_MASK, sceneEngines
 
 CLOUD_SOLID = 0.3            # [-] solid fraction of a falling cloud: grains fall freely
 PRESS_STILL = (0.03, 1e-5)   # ([s], [m]): a press ends when its plate moved less than this over that time
@@ -90,21 +90,25 @@ def cloud(shape, dMin, dMax, vSolid, seed, zBottom=0.0):
 
 
 def grainCloud(p, shape, vSolid, seed, zBottom=0.0):
-    """cloud() of p's grains; with grain 'clump' a cloud of their circumscribed spheres (the templates' reach times
-    the sizes, the volume in proportion) whose radii are then the clumps' r_eq: clumps are placed without overlap,
-    off the walls."""
-    if p['grain'] != 'clump':
+    """cloud() of p's grains; with grain 'clump' or 'polyhedron' a cloud of their circumscribed spheres (the
+    templates' reach, or polyhedronsample.REACH, times the sizes, the volume in proportion) whose radii are then the
+    grains' r_eq: they are placed without overlap, off the walls."""
+    if p['grain'] not in ('clump', 'polyhedron'):
         return cloud(shape, p['dMin'], p['dMax'], vSolid, seed, zBottom)
-    f = ClumpSample.ofScene(p).reach()
+    f = ClumpSample.ofScene(p).reach() if p['grain'] == 'clump' else polyhedronsample.REACH
     x, r, top = cloud(shape, f * p['dMin'], f * p['dMax'], f ** 3 * vSolid, seed, zBottom)
     return x, r / f, top
 
 
 def place(centres, radii, material, p=None, seed=0):
     """The grains appended to the scene, in the order given (their ids follow it): spheres, or with p['grain'] 'clump'
-    clumps of the scene's templates (built from p on first need) turned at random from seed."""
+    clumps of the scene's templates (built from p on first need) turned at random from seed, or with 'polyhedron'
+    the kind's polyhedra drawn from seed (polyhedronsample.place)."""
     if p is not None and p['grain'] == 'clump':
         ClumpSample.ofScene(p).place(centres, radii, material, seed)
+        return
+    if p is not None and p['grain'] == 'polyhedron':
+        polyhedronsample.place(centres, radii, material, seed)
         return
     for c, r in zip(centres, radii):
         O.bodies.append(utils.sphere(tuple(float(v) for v in c), float(r), material=material, mask=GRAIN_MASK))
@@ -119,8 +123,7 @@ def press(exp, steel, mass, force, mark=None):
     """A steel plate (a wall, free along z only, of `mass` [kg]) laid on the grains' top and pressed down with
     `force` [N] until it rests (PRESS_STILL, within PRESS_TIME), or until it reaches the height `mark` [m] if given.
     Returns its id: the caller keeps or erases it."""
-    x, r, _ = grains.arrays()
-    plate = utils.wall(float(np.max(x[:, 2] + r)), axis=2, sense=-1, material=steel, mask=STEEL_MASK)
+    plate = utils.wall(grains.top(), axis=2, sense=-1, material=steel, mask=STEEL_MASK)
     plate.state.blockedDOFs = 'xyXYZ'
     plate.state.mass = mass
     plate.state.inertia = Vector3(1, 1, 1)  # a wall has none; its rotations are blocked, but Newton divides by it
@@ -218,6 +221,8 @@ def store(path, key, exp, **extra):
     clumps = ClumpSample.current() if grains.kind().name == 'clump' else None
     if clumps is not None:
         doc.update(clumps.document())
+    if grains.kind().name == 'polyhedron':   # the shapes: their vertices
+        doc.update(polyhedronsample.document(grains.kind().ids()))
     writeAtomic(path, json.dumps(doc))
     return len(r)
 
@@ -241,11 +246,13 @@ def reload(exp, doc, ballast, damping, settleTime=0.01):
     chain with the loading damping, the step of eq. 5, and a short settling: contacts re-form with the stored
     overlaps, only their shear and rolling history is lost."""
     p = exp.p
-    O.engines = engines(damping, p['law'], rolling(p))
+    O.engines = sceneEngines(p, damping)
     if 'clumps' in doc:   # the scene's kind is the sample's (the key holds grain)
         ClumpSample.fromDocument(doc).rebuild(doc, ballast)
+    elif 'polyhedra' in doc:
+        polyhedronsample.rebuild(doc, ballast)
     else:
         g = np.array([[float(v) for v in row] for row in doc['grains']]).reshape(-1, 4)
         place(g[:, :3], g[:, 3], ballast)
-    O.dt = p['dtSafety'] * utils.PWaveTimeStep()
+    O.dt = p['dtSafety'] * grains.kind().pWaveTimeStep()   # YADE's PWaveTimeStep() but for polyhedra
     exp.phases.run('settle', lambda: grains.unbalanced() < 0.01, tEnd=O.time + settleTime, checkEvery=100)

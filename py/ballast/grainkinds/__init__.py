@@ -111,6 +111,11 @@ class GrainKind:
         """The radius VTK draws a grain with [m]: r_eq."""
         return self.radii(ids)
 
+    def tops(self, ids):
+        """The height of each grain's highest point [m]: its centre's z plus r_eq (exact for a sphere; a kind whose
+        grain reaches beyond r_eq overrides it)."""
+        return self.centres(ids)[:, 2] + self.radii(ids)
+
     def pWaveTimeStep(self):
         """Eq. 5's critical step [s] of the scene's grains: YADE's PWaveTimeStep() (spheres, clump members)."""
         return utils.PWaveTimeStep()

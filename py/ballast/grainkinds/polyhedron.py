@@ -140,6 +140,10 @@ class PolyhedronKind(GrainKind):
             out[ids] = S[ids] / self.volumes(ids)[:, None, None]
         return out
 
+    def tops(self, ids):
+        """The height of each polyhedron's highest vertex [m] (a loop over the grains: for seating a plate)."""
+        return np.array([float(np.max(globalVertices(i)[:, 2])) for i in ids], dtype=float)
+
     def grainOf(self, bodyIds):
         return np.asarray(bodyIds, dtype=np.int64)
 

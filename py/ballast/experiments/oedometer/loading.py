@@ -16,7 +16,7 @@ import math
 
 import numpy as np
 from yade import O, Vector3, utils
-from yade.wrapper import InterpolatingDirectedForceEngine
+from yade.wrapper import InterpolatingDirectedForceEngine, Wall
 
 from ... import runtime
 from .. import chain, grains
@@ -30,7 +30,8 @@ EQ8_SAMPLES = 4000
 
 class PlateBase:
     """A steel plate (a YADE Box a little wider than the cylinder, free or kinematic along the axis only)
-    seated on the highest grain at the start of loading."""
+    seated on the highest grain at the start of loading. With grain 'polyhedron' the plate is a YADE Wall, its
+    plane the underside: YADE's polyhedra touch walls and facets, not boxes (docs/grains.md, "Polyhedra")."""
 
     LABEL = 'oedoForce'
 
@@ -54,12 +55,18 @@ class PlateBase:
     def seat(self, p, steel, dynamic):
         """The plate on the highest grain: its underside at z0."""
         self.p = p
-        x, r = grains.arrays()[:2]
-        self.z0 = float(np.max(x[:, 2] + r))
+        self.z0 = grains.top()
         half = 0.5 * p['plateThickness']
         side = 0.55 * p['diameter']  # half of a square plate covering the cylinder's mouth
-        b = utils.box((0, 0, self.z0 + half), (side, side, half), material=steel, fixed=not dynamic,
-                      color=scene.STEEL_COLOR, mask=scene.STEEL_MASK)
+        if p['grain'] == 'polyhedron':
+            # a wall, not a polyhedron plate: YADE cuts a polyhedron by a plane (cheap, exact for a flat plate wider
+            # than the mouth) where a polyhedron plate would be a grain to the kind and a CGAL intersection a contact
+            b = utils.wall(self.z0, axis=2, sense=-1, material=steel, color=scene.STEEL_COLOR, mask=scene.STEEL_MASK)
+            b.state.inertia = Vector3(1, 1, 1)   # a wall has none; its rotations are blocked, but Newton divides by it
+            b.dynamic = dynamic
+        else:
+            b = utils.box((0, 0, self.z0 + half), (side, side, half), material=steel, fixed=not dynamic,
+                          color=scene.STEEL_COLOR, mask=scene.STEEL_MASK)
         if dynamic:
             # a round steel plate of the cylinder's diameter, moving along the axis only, not slowed by
             # the grains' local damping (the load on it is the applied force, nothing else)
@@ -79,8 +86,9 @@ class PlateBase:
         return self.z0 - self.top()
 
     def top(self):
-        """Height of the plate's underside [m]."""
-        return O.bodies[self.plate].state.pos[2] - 0.5 * self.p['plateThickness']
+        """Height of the plate's underside [m] (a wall's plane is its underside)."""
+        b = O.bodies[self.plate]
+        return b.state.pos[2] - (0.0 if isinstance(b.shape, Wall) else 0.5 * self.p['plateThickness'])
 
     def contactForce(self):
         """Force of the grains on a kinematic plate [N]: the force container holds only its contacts."""

@@ -7,13 +7,13 @@ gives the porosities this reaches and why."""
 import math
 import os
 
-from yade import O, Vector3, utils
+from yade import O, Vector3
 
 from ... import runtime
 from ...params import requireWritableDir
 from .. import grains, preparation, sample
 from ..containers import Cylinder
-from ..scene import engines, materials, rolling
+from ..scene import polyhedronModulus, sceneEngines, sceneMaterials
 from .parameters import OWNER, packingKey
 from .rig import Rig
 
@@ -26,6 +26,9 @@ class StoredPacking:
     the :class:`Rig` (a registered object: ``@ballast.runtime.persistent(name)``)."""
 
     SEAT_STILL = (0.01, 2e-6)    # ([s], [m]): seated when the plate moved less than this over that time
+    # ([m/s], [s]): polyhedra deposit on until their rms speed is below this (at most that long): a press started on
+    # grains still bouncing from their fall kicked them to 30 m/s (measured)
+    POLYHEDRA_REST = (0.1, 0.2)
 
     def __init__(self):
         self.file, self.reused, self.escaped = None, False, None
@@ -56,7 +59,7 @@ class StoredPacking:
         self.file, doc, self.reused = sample.stored(exp, self.folder(p), keyDict, fname, p['reusePacking'],
                                                     lambda: self.build(exp), 'packing')
         exp.newScene()
-        ballast, steel = materials(p, p['young'])
+        ballast, steel = sceneMaterials(p, p['young'])
         rig = Rig(Cylinder(p, steel), ballast, steel)
         sample.reload(exp, doc, ballast, p['damping'])
         return rig
@@ -65,7 +68,7 @@ class StoredPacking:
     def build(self, exp):
         p = exp.p
         exp.newScene()
-        ballast, steel = materials(p, p['prepYoung'])
+        ballast, steel = sceneMaterials(p, p['prepYoung'])
         ballast.frictionAngle = p['depFriction']
         self.rig = Rig(None, ballast, steel)
         Rin = p['diameter'] / 2
@@ -73,15 +76,18 @@ class StoredPacking:
                                           p['seed'])
         # while the cloud falls the wall reaches above it, or grains bounce out over the rim
         self.rig.cylinder = Cylinder(p, steel, max(p['height'], top + p['dMax']))
-        O.engines = engines(p['prepDamping'], p['law'], rolling(p)) + [
+        O.engines = sceneEngines(p, p['prepDamping']) + [
             runtime.callback(self, 'shake', iterPeriod=10, dead=True, label='oedoShaker')]
         sample.place(pos, rad, self.rig.ballast, p, p['seed'])
-        O.dt = preparation.PREP_DT_SAFETY * utils.PWaveTimeStep()
+        O.dt = preparation.PREP_DT_SAFETY * grains.kind().pWaveTimeStep()   # YADE's PWaveTimeStep() but for polyhedra
         exp.phases.say('deposit: %d grains (%.1f %% of the cylinder) falling from up to %.3f m, friction %g rad '
                        '(E = %.3g Pa while preparing, dt = %.2e s)' % (len(rad), 100 * p['fill'], top,
                                                                       p['depFriction'], p['prepYoung'], O.dt))
         tDep = p['depTime'] or math.sqrt(2 * top / 9.81)
         sample.deposit(exp, tDep)
+        if p['grain'] == 'polyhedron':   # polyhedra bounce and roll longer (no viscous term in YADE's volumetric law)
+            vRest, tMax = self.POLYHEDRA_REST
+            exp.phases.run('deposit', lambda: grains.vRms() < vRest, tEnd=O.time + tMax, extra=grains.restInfo)
         out = [b.id for b in grains.spheres() if math.hypot(b.state.pos[0], b.state.pos[1]) > self.rig.cylinder.Rv
                or b.state.pos[2] < 0]
         grains.erase(out)
@@ -145,7 +151,9 @@ class StoredPacking:
     def stiffen(self, exp):
         """Back to the true modulus (preparation.Stiffener), then let the grains settle."""
         p = exp.p
-        preparation.Stiffener().run(exp, [(self.rig.ballast, p['young']), (self.rig.steel, p['steelYoungRatio'] * p['young'])],
-                                    p['young'] / p['prepYoung'])
+        E, Es = p['young'], p['steelYoungRatio'] * p['young']
+        if p['grain'] == 'polyhedron':   # PolyhedraMat's young is the volumetric modulus of the Young's modulus
+            E, Es = polyhedronModulus(p, E), polyhedronModulus(p, Es)
+        preparation.Stiffener().run(exp, [(self.rig.ballast, E), (self.rig.steel, Es)], p['young'] / p['prepYoung'])
         if p['young'] > p['prepYoung']:
             exp.phases.run('stiffen', lambda: grains.unbalanced() < 0.02, tEnd=O.time + 0.02, extra=grains.restInfo)

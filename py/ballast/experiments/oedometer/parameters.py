@@ -112,6 +112,7 @@ class OedometerParameters(ExperimentParameters):
     """The oedometer's checked parameters (frozen) and what follows from them."""
 
     OWNER, PARAMS = OWNER, PARAMS
+    POLYHEDRA = True   # grain 'polyhedron' too (docs/grains.md, "Polyhedra": the oedometer with polyhedra)
 
     @property
     def T(self):
@@ -157,6 +158,10 @@ class OedometerParameters(ExperimentParameters):
             bad('dMax', 'must be smaller than height = %g' % p['height'])
         if p['Fmin'] >= p['Fmax']:
             bad('Fmin', 'must be smaller than Fmax = %g' % p['Fmax'])
+        if p['grain'] == 'polyhedron':
+            if p['loadMode'] == 'servo':   # its gain reads the plate contacts' kn in N/m; the volumetric law's is N/m^3
+                bad('loadMode', "with grain = 'polyhedron' only 'plate' or 'displacement': the servo's gain reads the "
+                                "contacts' stiffness in N/m, the volumetric law's is in N/m^3")
 
 
 def check(values, text=False):
