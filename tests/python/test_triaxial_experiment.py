@@ -238,3 +238,18 @@ def test_a_collapse_between_two_samples_stops_as_a_failure(run, tmp_path):
     s = again.load(1)
     assert s['stoppedBy'] == 'failure' and s['failedInCycle'] == 3 and s['axialStrainAtStop'] > 1.0
     assert O.iter - steps <= 60   # stopped within the run's check interval (50 steps) of the first update
+
+
+def test_the_quasi_static_option_scales_what_the_engines_create_from_its_first_step(run, tmp_path):
+    """quasiStatic: from the first step of cycling the crushing and abrasion engines give what they create the density
+    scaling of the option's step (its first: 4 times the paper's, own step that over dtSafety). They were built with
+    densityStep's 0 and learnt the step only at the first cycle's end: fragments of a crush in cycle 1 had unscaled
+    density at 4 times their step, and at q_max 370 kPa the specimen exploded (issue 45)."""
+    from ballast.experiments import chain
+    specimens = os.path.join(os.path.dirname(run[2]), 'specimens')
+    t = TriaxialTest(results=str(tmp_path), runId='qs', specimenDir=specimens, quasiStatic=1e-3, **SMALL)
+    t.prepare()
+    t.startCycling()
+    own = t.ownStep()
+    assert own == pytest.approx(4 * t.p.startTimeStep() / t.p['dtSafety'], rel=1e-12)
+    assert [chain.engine(k).scaledPWaveStep for k in ('crush', 'abrasion')] == [own, own]

@@ -37,6 +37,18 @@ def startDensityScaling(exp, step, ownStep, others):
     scaleDensities(harvest.grains().ids, ownStep)
     for bid, own in others.items():
         O.bodies[bid].state.densityScaling = 1.0 if own is None else float(_ballast.densityScaling(own, ownStep))
+    engineSteps(ownStep)
+
+
+def engineSteps(ownStep):
+    """The crushing and abrasion engines' scaledPWaveStep [s]: the grains they create or resize get the density
+    scaling of the step. Without it the quasi-static option's first cycle (its step 4 times the paper's, the engines
+    built with densityStep's 0) made fragments of unscaled density: at q_max 370 kPa on the triaxial, 124 crushes
+    and an explosion in cycle 1 where the paper's step crushed one grain."""
+    for label in ('crush', 'abrasion'):
+        e = engine(label)
+        if e is not None:
+            e.scaledPWaveStep = ownStep
 
 
 def changeDensityStep(step, ownStep, others):
@@ -47,10 +59,7 @@ def changeDensityStep(step, ownStep, others):
     scaleDensities(harvest.grains().ids, ownStep)
     for bid, own in others.items():
         O.bodies[int(bid)].state.densityScaling = 1.0 if own is None else float(_ballast.densityScaling(own, ownStep))
-    for label in ('crush', 'abrasion'):
-        e = engine(label)
-        if e is not None:
-            e.scaledPWaveStep = ownStep
+    engineSteps(ownStep)
 
 
 def startStiffnessStep(safety):
