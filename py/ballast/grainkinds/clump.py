@@ -238,10 +238,8 @@ class ClumpKind(GrainKind):
         erased, adding nothing to the union), moving with the clump's rigid motion; returns its id. None when the clump
         has two members or more that no other holds."""
         c = O.bodies[bid]
-        members = sorted(c.shape.members.keys())
-        pos = np.array([tuple(O.bodies[m].state.pos) for m in members], dtype=float)
-        radii = np.array([O.bodies[m].shape.radius for m in members], dtype=float)
-        free = np.flatnonzero(containers(pos, radii) < 0)
+        members, pos, radii, holder = _members(c)
+        free = np.flatnonzero(holder < 0)
         if len(free) != 1:
             return None
         keep = members[int(free[0])]
@@ -281,12 +279,8 @@ class ClumpKind(GrainKind):
         c = O.bodies[bid]
         st, mask, material = c.state, c.groupMask, c.material
         M, v, w, scaling, blocked = st.mass, Vector3(st.vel), Vector3(st.angVel), st.densityScaling, st.blockedDOFs
-        members = sorted(c.shape.members.keys())
-        bodies = [O.bodies[m] for m in members]
-        pos = np.array([tuple(b.state.pos) for b in bodies], dtype=float)
-        radii = np.array([b.shape.radius for b in bodies], dtype=float)
         # members held whole by another add nothing to the union: cut without them, then put with their holders
-        holder = containers(pos, radii)
+        members, pos, radii, holder = _members(c)
         free = np.flatnonzero(holder < 0)
         cut = _ballast.clumpSplit(np.asarray(stress, dtype=float), tuple(st.pos), pos[free], radii[free])
         piece = np.empty(len(members), dtype=np.int64)
@@ -401,6 +395,15 @@ class ClumpKind(GrainKind):
         st.angVel = w
         store.volumes[cid] = V1
         return Resized(float(equivalentRadius(V)), float(equivalentRadius(V1)), V, M, M1, V1)
+
+
+def _members(c):
+    """(member ids in order, their centres (n, 3) [m], radii (n,) [m], and the member holding each whole or -1:
+    clumpshapes.containers) of the clump body c: what a crush reads, once."""
+    members = sorted(c.shape.members.keys())
+    pos = np.array([tuple(O.bodies[m].state.pos) for m in members], dtype=float)
+    radii = np.array([O.bodies[m].shape.radius for m in members], dtype=float)
+    return members, pos, radii, containers(pos, radii)
 
 
 register(ClumpKind())

@@ -207,8 +207,8 @@ class TriaxialTest(Cyclic, Experiment):
         appendSample(self, row)
         if self.failed is None and row[5] >= self.p['failureStrain']:
             self.failed = int(row[1]) + 1   # samples.csv's cycle: the cycles closed by then
-            self.say('the specimen failed: axial strain %.2f %% in cycle %d passed failureStrain (%g %%); cycling stops' % (
-                100 * row[5], self.failed, 100 * self.p['failureStrain']))
+            self.say('the specimen failed: axial strain %.2f %% in cycle %d passed failureStrain (%g %%); cycling '
+                     'stops' % (100 * row[5], self.failed, 100 * self.p['failureStrain']))
         plot.addData(**dict(zip(('t', 'cycle', 'q', 'qGrains', 'p', 'axialStrain', 'volumetricStrain'), row[:7])))
         if k:
             outputs.writeCycles(self)
@@ -262,8 +262,8 @@ class TriaxialTest(Cyclic, Experiment):
             target - self.cyclesDone(), p.seatDeviator() / 1e3, p.peakDeviator() / 1e3, p['loadFile'] or 'sine',
             p.period(), p['confining'] / 1e3, O.dt, rec.period / O.dt))
         if self.cyclesDone() < target:
-            self.runUntil(lambda: self.cyclesDone() >= target or self.failed is not None, tEnd=tEnd + 2 * rec.period / p['samples'], phase='load',
-                          checkEvery=50, simSpan=tEnd - O.time, simStart=O.time,
+            self.runUntil(lambda: self.cyclesDone() >= target or self.failed is not None,
+                          tEnd=tEnd + 2 * rec.period / p['samples'], phase='load', checkEvery=50, simSpan=tEnd - O.time, simStart=O.time,
                           extra=lambda: 'cycle %d of %d, axial strain %.3f %%, volumetric %.3f %%, %d crushed' % (
                               self.cyclesDone(), target, 100 * (rec.samples[-1][5] if rec.samples else 0),
                               100 * (rec.samples[-1][6] if rec.samples else 0), rec.samples[-1][9] if rec.samples else 0))

@@ -64,8 +64,8 @@ PARAMS = {
                       'qMin does)', anyText, 'a path', text),
     'cycles': Param(10, '-', 'load cycles of one load()', positiveInt, 'an integer >= 1'),
     'failureStrain': Param(0.2, '-', 'axial strain at which cycling stops: the specimen failed (a laboratory stops a '
-                           'cyclic test once the specimen fails; summary.json says so, with the cycle)', between(0.001, 0.5),
-                           'a number in [0.001, 0.5)'),
+                           'cyclic test once the specimen fails; summary.json says so, with the cycle)',
+                           between(0.001, 0.5), 'a number in [0.001, 0.5)'),
     # the monotonic drained compression (docs/triaxial.md, "Monotonic compression")
     'monotonic': Param(False, '-', 'instead of cycles, a drained monotonic compression: the top platen driven down at '
                        'strainRate under p\' until maxAxialStrain', boolean, '0 or 1', flag),
