@@ -200,9 +200,10 @@ class ClumpKind(GrainKind):
         a free sphere is replaced by the paper's fragments (the sphere kind), and those in an overlap it had through a
         silenced contact get a silenced contact too."""
         if O.bodies[bid].isClump:
-            whole = self._asSphere(bid)
+            arrays = _members(O.bodies[bid])
+            whole = self._asSphere(bid, arrays)
             if whole is None:
-                return self.split(bid, stress)
+                return self.split(bid, stress, arrays)
             bid = whole   # its union is one member: no plane cuts it, it crushes as that sphere
         # a piece still overlapping another through a silenced contact: its fragments lie in that overlap too, and
         # contacts the collider made there would start with full stiffness at that depth
@@ -230,15 +231,15 @@ class ClumpKind(GrainKind):
                                       'members (ClumpKind.abrade; issue 47, item 3)')
         return _SPHERE.resize(bid, factor)
 
-    def _asSphere(self, bid):
+    def _asSphere(self, bid, arrays):
         """A clump whose members all lie inside one of them (containers) is that sphere: its union is the member's, so
         every cut gives one piece, which was clumped again under a new id and crushed again at the next check
         (measured: 12 of 76 splits in the clump box, at successive checks). It becomes a free sphere at the member's
         centre of the clump's volume V and mass M (radius r_eq, so it never grows; the held members, inside it, are
         erased, adding nothing to the union), moving with the clump's rigid motion; returns its id. None when the clump
-        has two members or more that no other holds."""
+        has two members or more that no other holds. arrays: _members of the clump."""
         c = O.bodies[bid]
-        members, pos, radii, holder = _members(c)
+        members, pos, radii, holder = arrays
         free = np.flatnonzero(holder < 0)
         if len(free) != 1:
             return None
@@ -263,7 +264,7 @@ class ClumpKind(GrainKind):
         b.state.blockedDOFs = blocked
         return keep
 
-    def split(self, bid, stress):
+    def split(self, bid, stress, arrays=None):
         """Clump bid split into pieces under its stress tensor (3,3) [Pa] (docs/grains.md, "Crushing a clump"):
         the pieces of ``_ballast.clumpSplit`` (planes through its centre of mass, by its principal stresses) take
         its members. The clump's volume V is partitioned among them (clumpshapes.pieceShares: the overlap of members
@@ -275,12 +276,12 @@ class ClumpKind(GrainKind):
         overlap (inside the clump they had no contact) get a contact of zero stiffness, which carries no force
         until they part (:func:`ballast.contacts.silence`). Returns :class:`Replaced` (volume ratio 1: nothing to
         regrow) with ``split``: pieces, the plane normals, whether the median fallback was used, the silenced
-        pairs and the pieces' shares of the volume."""
+        pairs and the pieces' shares of the volume. arrays: _members of the clump, if the caller has them."""
         c = O.bodies[bid]
         st, mask, material = c.state, c.groupMask, c.material
         M, v, w, scaling, blocked = st.mass, Vector3(st.vel), Vector3(st.angVel), st.densityScaling, st.blockedDOFs
         # members held whole by another add nothing to the union: cut without them, then put with their holders
-        members, pos, radii, holder = _members(c)
+        members, pos, radii, holder = _members(c) if arrays is None else arrays
         free = np.flatnonzero(holder < 0)
         cut = _ballast.clumpSplit(np.asarray(stress, dtype=float), tuple(st.pos), pos[free], radii[free])
         piece = np.empty(len(members), dtype=np.int64)
