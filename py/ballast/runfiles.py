@@ -148,7 +148,9 @@ def plainLogTicks(ax, axes='x'):
             if abs(math.log10(v) - round(math.log10(v))) < 1e-9:
                 return '%g' % v
             few = lo > 0 and math.log10(hi / lo) <= 2.5
-            return '%g' % v if few and ('%.0e' % v)[0] in '235' else ''
+            # a tick whose mantissa is 2, 3 or 5 exactly: one at 1.6 or 1.8 (within a decade) rounds to 2, and is not
+            d = v / 10 ** math.floor(math.log10(v))
+            return '%g' % v if few and min(abs(d - k) for k in (2, 3, 5)) < 1e-9 else ''
         return FuncFormatter(label)
     for name in axes:
         axis, limits = (ax.xaxis, ax.get_xlim) if name == 'x' else (ax.yaxis, ax.get_ylim)

@@ -102,7 +102,8 @@ def write(exp):
     for name, df in (('cycles.csv', cyc), ('grading.csv', gradingTable(exp))):
         writeAtomic(os.path.join(out, name), df.to_csv(index=False, float_format='%.9g'))
     writeAtomic(os.path.join(out, 'summary.json'), json.dumps(strictJson(s), indent=1) + '\n')
-    figure(cyc, os.path.join(out, 'strains.png'), exp.p.references())
+    figure(cyc, os.path.join(out, 'strains.png'), exp.p.references(),
+           failed=(exp.failed, s.get('axialStrainAtStop')) if exp.failed is not None else None)
     if exp.frames:
         writePvd(os.path.join(out, 'triaxial.pvd'), exp.frames)
     return s
@@ -134,9 +135,10 @@ def writeFrame(exp):
     writePvd(os.path.join(exp.out, 'triaxial.pvd'), exp.frames)
 
 
-def figure(cycles, path, references=()):
+def figure(cycles, path, references=(), failed=None):
     """strains.png: the permanent axial and volumetric strain [%] against N (log N), each measured curve of
-    `references` ((kind, N, strain) as strains.readReference gives) over its own."""
+    `references` ((kind, N, strain) as strains.readReference gives) over its own; failed: (the cycle the specimen
+    failed in, the axial strain at the stop [-]), said in the title, or None."""
     import matplotlib
     matplotlib.use('Agg')
     import matplotlib.pyplot as plt
@@ -154,7 +156,8 @@ def figure(cycles, path, references=()):
         ax.grid(True, which='both', alpha=0.3)
         ax.legend(loc='upper left')
     axes[1].set_xlabel('load cycles N')
-    fig.suptitle('Permanent strains of the triaxial specimen')
+    fig.suptitle('Permanent strains of the triaxial specimen' + (
+        '\n(failed in cycle %d: axial strain %.1f %% at the stop)' % (failed[0], 100 * failed[1]) if failed else ''))
     return saveFigure(fig, path)
 
 
