@@ -1,4 +1,4 @@
-"""The Debian package: `cpack -G DEB` of a build for /usr (CMakeLists.txt) gives yade-ballast_<version>_<arch>.deb,
+"""The Debian package: `cpack -G DEB` of setup.sh's build (CMakeLists.txt; it installs under /usr) gives yade-ballast_<version>_<arch>.deb,
 whose control file depends on Debian's yade and the Boost libraries the binding links, which apt accepts
 next to the installed yade (a simulated install), and whose files, unpacked into a temporary root,
 give a working `from ballast import BallastCrushEngine` in yade. Nothing is installed on this machine:
@@ -11,7 +11,7 @@ import subprocess
 import pytest
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-BUILD = os.path.join(ROOT, 'build', 'package')    # kept between runs: rebuilds only what changed
+BUILD = os.path.join(ROOT, 'build')    # setup.sh's: the .deb packs the build the other tests run (no second compile)
 SITE = 'usr/lib/python3/dist-packages'
 ENV = {k: v for k, v in os.environ.items() if k not in ('PYTHONPATH', 'PYTHONHOME')}
 ENV['OMP_NUM_THREADS'] = '1'
@@ -28,9 +28,7 @@ def run(cmd, cwd=ROOT, timeout=1800, env=ENV):
 @pytest.fixture(scope='module')
 def deb(tmp_path_factory):
     out = tmp_path_factory.mktemp('deb')
-    run(['cmake', '-S', ROOT, '-B', BUILD, '-DCMAKE_BUILD_TYPE=Release', '-DCMAKE_INSTALL_PREFIX=/usr', '-DBUILD_TESTING=OFF',
-         '-DPython3_EXECUTABLE=/usr/bin/python3'])
-    run(['cmake', '--build', BUILD, '-j', str(os.cpu_count() or 1)])
+    assert os.path.exists(os.path.join(BUILD, 'CPackConfig.cmake')), 'build/ is made by setup.sh before the tests'
     run(['cpack', '-G', 'DEB', '-B', out], cwd=BUILD)
     debs = [f for f in os.listdir(out) if f.endswith('.deb')]
     assert len(debs) == 1, debs
