@@ -3,6 +3,7 @@ force of its criterion (three sizes, each criterion) quasi-statically; Weibull s
 10 over 120 grains give back the modulus and the size law in their 95 % intervals; a grain that cannot
 crush is reported so; the outputs and the command line running (its refusals: test_commandline.py)."""
 import json
+import math
 import os
 import shutil
 import subprocess
@@ -151,8 +152,20 @@ def test_a_clump_between_the_platens_crushes_and_splits(tmp_path):
     from ballast.engines import BallastCrushEngine
     test = SingleParticle(grain='clump', clumpTemplates=2, diameters=[0.03], ft0=3e5, m=0.5, speed=0.002,
                           results=str(tmp_path), progress=60)
-    s = test.run()
+    test.prepare()
+    # the clump's height between the platens, from the platens' inner faces (boxes of half-thickness t)
+    top, bottom = O.bodies[test.tester.top[0]], O.bodies[test.tester.bottom[0]]
+    h = (top.state.pos[2] - top.shape.extents[2]) - (bottom.state.pos[2] + bottom.shape.extents[2])
+    assert 0.5 * 0.03 < h < 0.03    # a flat grain lying on its flat side: lower than its volume-equivalent sphere
+    s = test.load()
     t = test.table()
+    # the crush at the closed form for any shape (docs/calibration.md): sigma_zz = F h / V, uniaxial by the torque
+    # balance, von Mises = sigma_zz reaches ft0 / r_eq^m at F = ft0 r_eq^-m V / h; within the grain's inertia
+    # (inertiaRatioMax, 2 % at this speed) and the contact points' travel
+    V = 4 / 3 * math.pi * 0.015 ** 3
+    assert t.expectedForce[0] == pytest.approx(3e5 / 0.015 ** 0.5 * V / h, rel=1e-9)
+    assert t.force[0] == pytest.approx(t.expectedForce[0], rel=0.03)
+    assert s['closedFormErrorMax'] == pytest.approx(abs(t.force[0] / t.expectedForce[0] - 1), rel=1e-9)
     assert s['nCrushed'] == 1 and t.crushed.all() and t.diameter.tolist() == [0.03]
     # the force is what the clump carried: both platens the same to the grain's inertia, F/d^2 from d = 2 r_eq
     assert t.force[0] > 0 and abs(t.forceBottom[0] / t.force[0] - 1) < 0.05

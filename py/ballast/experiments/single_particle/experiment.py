@@ -84,14 +84,15 @@ class Tester:
     def __init__(self, speed=0.0, maxStrain=0.0):
         self.speed, self.maxStrain = speed, maxStrain
         self.grain, self.d, self.top, self.bottom = [], [], [], []   # body ids and diameters, per grain
+        self.h = []           # per grain its height between the platens [m] when placed (a sphere's: d)
         self.result = []      # per grain None (loading) or {crushed, F, Fbottom, displacement, value, strength, t}
         self.curves = []      # (grain, t, displacement, F)
         self.t0, self.seen = None, 0
         self.forces = {}      # grain -> (F on its top platen, F on its bottom one) [N] this step
 
     def state(self):
-        return {k: getattr(self, k) for k in ('speed', 'maxStrain', 'grain', 'd', 'top', 'bottom', 'result', 'curves',
-                                              't0', 'seen')}  # forces: measured again at the next step
+        return {k: getattr(self, k) for k in ('speed', 'maxStrain', 'grain', 'd', 'h', 'top', 'bottom', 'result',
+                                              'curves', 't0', 'seen')}  # forces: measured again at the next step
 
     @classmethod
     def fromState(cls, s, ref=None):
@@ -191,6 +192,7 @@ class SingleParticle(Experiment):
             x, t = k * pitch, PLATEN_THICKNESS / 2
             gid, h, a = place(k, x, dk)
             tester.grain.append(gid)
+            tester.h.append(float(h))
             tester.bottom.append(O.bodies.append(utils.box((x, 0, -t), (a, a, t), fixed=True, material=steel,
                                                            mask=STEEL_MASK)))
             tester.top.append(O.bodies.append(utils.box((x, 0, h + t), (a, a, t), fixed=True, material=steel,
@@ -230,6 +232,7 @@ class SingleParticle(Experiment):
             h = float(np.max(v[:, 2]))
             reach = float(np.max(np.linalg.norm(v[:, :2], axis=1)))
             tester.grain.append(addPolyhedron(v + (x, 0, 0), ballast, mask=GRAIN_MASK))
+            tester.h.append(h)
             tester.bottom.append(O.bodies.append(platen(x, 0.0, reach, steel, up=True)))
             tester.top.append(O.bodies.append(platen(x, h, reach, steel, up=False)))
         tester.d, tester.result = [float(x) for x in d], [None] * len(d)

@@ -25,8 +25,10 @@ def table(exp):
     p, t = exp.p, exp.tester
     d = np.array(t.d)
     cls, _ = strengths.classes(d, min(d.min(), p['dMin']), max(d.max(), p['dMax']), p['classes'])
+    # a grain that is not a sphere: the closed form at its height between the platens (a state of before has none)
+    h = [t.h[k] if p['grain'] != 'sphere' and k < len(t.h) else None for k in range(len(d))]
     rows = [(k, d[k], int(cls[k]), r['crushed'], r['F'], r['Fbottom'], r['displacement'], r['F'] / d[k] ** 2,
-             r['value'], r['strength'], float(p.expectedForce(d[k])), r['t']) for k, r in enumerate(t.result)]
+             r['value'], r['strength'], float(p.expectedForce(d[k], h[k])), r['t']) for k, r in enumerate(t.result)]
     return pd.DataFrame(rows, columns=STRENGTH_COLUMNS)
 
 

@@ -54,10 +54,10 @@ class SingleParticleParameters(ExperimentParameters):
         """The smallest of the diameters given, else dMin."""
         return min(self['diameters']) if self['diameters'] else self['dMin']
 
-    def expectedForce(self, d):
-        """The closed-form force [N] that crushes a grain of diameter d [m] of characteristic strength
-        (closedform.crushingForce)."""
-        return crushingForce(self['criterion'], d / 2, self['ft0'], self['m'])
+    def expectedForce(self, d, height=None):
+        """The closed-form force [N] that crushes a grain of diameter d [m] (volume-equivalent) and height [m] between
+        the platens (None: a sphere's) of characteristic strength (closedform.crushingForce)."""
+        return crushingForce(self['criterion'], d / 2, self['ft0'], self['m'], height)
 
     def crossCheck(self):
         p, bad = self, self.bad
