@@ -17,14 +17,14 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 SCRIPT = os.path.join(HERE, '..', '..', 'scripts', 'conditions.py')
 
 
-def records(root, runs):
+def records(root, runs, continues=None):
     """Records with one run per {runId: (seed, confining, [axialStrain per cycle], axialStrainJumped or None,
-    failedInCycle or None, [(cycle, BBI)])}."""
+    failedInCycle or None, [(cycle, BBI)])}; continues: {runId: the state it continued from}."""
     rows = []
     for k, (rid, (seed, p, values, jumped, failed, bbi)) in enumerate(runs.items()):
         d = os.path.join(root, 'runs', rid)
         os.makedirs(d)
-        summary = {'params': {'seed': seed, 'confining': p, 'continueFrom': ''}}
+        summary = {'params': {'seed': seed, 'confining': p, 'continueFrom': (continues or {}).get(rid, '')}}
         if failed:
             summary.update(stoppedBy='failure', failedInCycle=failed)
         with open(os.path.join(d, 'summary.json'), 'w') as fh:
@@ -56,15 +56,34 @@ def test_per_seed_and_per_condition_by_hand(tmp_path):
     assert b1.axialStrain[1] == 0.09 and math.isnan(b1.failedInCycle[1])
     assert math.isnan(b1.axialStrain[3]) and b1.failedInCycle[3] == 2   # failed before N: counted, not a value
     table = conditions.conditionTable(seeds, ['axialStrain']).set_index(['condition', 'cycle'])
-    a = table.loc[(root + '[confining=60000]', 3)]
+    a = table.loc[('confining=60000', 3)]
     assert a.seeds == 2 and a.failed == 0
     assert a.axialStrain_mean == pytest.approx((0.03 + 0.06) / 2) and a.axialStrain_min == 0.03
     assert a.axialStrain_max == pytest.approx(0.06) and a.BBI_mean == pytest.approx((0.004 + 0.008) / 2)
-    b = table.loc[(root + '[confining=10000]', 3)]
+    b = table.loc[('confining=10000', 3)]
     assert b.seeds == 1 and b.failed == 1 and b.failedInCycles == '2' and b.axialStrain_mean == 0.12
     text = conditions.markdown(table.reset_index(), ['axialStrain'])
     assert '| confining=60000 | 3 | 2 | 4.5 [3, 6] | 0.006 [0.004, 0.008] |  |' in text
     assert '| confining=10000 | 3 | 1 | 12 | 0 | 1 (in cycle 2) |' in text
+
+
+def test_a_realization_whose_slices_go_on_in_another_study_counts_once(tmp_path):
+    """Seed 1's first slice in study 'first', its second (continued from the first's state, its cycles.csv holding
+    every cycle) in study 'second'; seed 2 in 'first' only: one condition of two seeds, seed 1 read from its last
+    slice. A run of the same name in a third study that nobody continued stays a realization of its own."""
+    first = records(tmp_path / 'first', {'s1': (1, 60e3, [0.01, 0.02], None, None, [(0, 0.0)]),
+                                         's2': (2, 60e3, [0.02, 0.03, 0.04, 0.05], None, None, [(0, 0.0)])})
+    second = records(tmp_path / 'second', {'s1-more': (1, 60e3, [0.01, 0.02, 0.025, 0.03], None, None, [(0, 0.0)])},
+                     continues={'s1-more': '../first/runs/s1/state-end.yade.gz'})
+    seeds = conditions.realizationTable([first, second], ['confining'], ['axialStrain'], [2, 4])
+    assert sorted(seeds.runId.unique()) == ['s1-more', 's2']   # s1 is the first slice of s1-more
+    table = conditions.conditionTable(seeds, ['axialStrain']).set_index(['condition', 'cycle'])
+    assert list(table.index) == [('confining=60000', 2), ('confining=60000', 4)]
+    assert table.loc[('confining=60000', 4)].seeds == 2
+    assert table.loc[('confining=60000', 4)].axialStrain_mean == pytest.approx((0.03 + 0.05) / 2)
+    third = records(tmp_path / 'third', {'s1': (3, 60e3, [0.04, 0.06], None, None, [(0, 0.0)])})
+    seeds = conditions.realizationTable([first, second, third], ['confining'], ['axialStrain'], [2])
+    assert sorted(seeds.runId) == ['s1', 's1-more', 's2'] and sorted(seeds.seed) == [1, 2, 3]
 
 
 def test_the_scripts_run_without_yade_and_refuse_a_missing_quantity(tmp_path):

@@ -1,5 +1,6 @@
 """What a study's realizations say at chosen cycles, condition by condition (issue 46, item 4: the prediction
 table). A condition is the runs that share the values of the parameters named (`by`: confining, qMax, f, ...),
+in whichever of the studies given they lie (named by those values: 'confining=10000 qMax=230000 f=5'),
 its realizations their seeds, a realization run in slices read from its last slice (settlement.realizationRuns).
 Per realization and cycle N: each quantity's total at N (a strain with its jumped cycles' share,
 curvefit.total), the breakage index BBI of the last grading taken at or before N, or, for a specimen that failed
@@ -20,7 +21,8 @@ def realizationTable(paths, by, quantities, at):
     `quantities` (NaN where it failed), BBI (NaN without a grading by then), failedInCycle (NaN where it did not
     fail by then). ValueError naming a quantity a run did not write."""
     rows = []
-    for label, run, c in realizationRuns(paths, by):
+    for path, run, c in realizationRuns(paths, by):
+        label = path.partition('[')[2].rstrip(']') or path   # by the values alone: a condition's runs may lie in several studies
         missing = [q for q in quantities if q not in c]
         if missing:
             raise ValueError('conditions: %s wrote no %s in cycles.csv; it has %s' % (
@@ -76,8 +78,7 @@ def markdown(table, quantities, scale=100.0, unit='%'):
         return '%.3g [%.3g, %.3g]' % (m, lo, hi) if row['seeds'] > 1 else '%.3g' % m
     for row in table.to_dict('records'):
         failed = '%d (in cycle %s)' % (row['failed'], row['failedInCycles'].replace(' ', ', ')) if row['failed'] else ''
-        name = row['condition'].partition('[')[2].rstrip(']') or row['condition']   # the values, not the path
-        lines.append('| ' + ' | '.join([name, str(row['cycle']), str(row['seeds'])] +
+        lines.append('| ' + ' | '.join([row['condition'], str(row['cycle']), str(row['seeds'])] +
                                         [cell(row, q, scale) for q in quantities] + [cell(row, 'BBI', 1.0), failed]) +
                      ' |')
     return '\n'.join(lines) + '\n'

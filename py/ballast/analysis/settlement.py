@@ -68,12 +68,26 @@ def curves(paths, apart=(), tipping=None, by=()):
     return pd.concat(rows, ignore_index=True)
 
 
+def continuedElsewhere(study, others):
+    """The runIds of `study`'s runs a run of another study (`others`) continued from: a state in
+    <that study's folder name>/runs/<runId>/ (a study whose slices go on in a study of their own)."""
+    name = os.path.basename(os.path.normpath(study.dir))
+    ids = set()
+    for other in others:
+        for r in other.runs:
+            parts = os.path.normpath(r.params.get('continueFrom') or '.').split(os.sep)
+            if len(parts) >= 4 and parts[-4:-2] == [name, 'runs']:
+                ids.add(parts[-2])
+    return ids
+
+
 def realizationRuns(paths, by=()):
     """(study or variant label, run, its cycles.csv) of every finished realization of the studies at `paths` that
-    wrote cycles.csv with cycle and settlement, a realization run in slices once: as its last slice."""
-    for path in paths:
-        study = StudyRuns(path)
-        earlier = continued(study.runs)
+    wrote cycles.csv with cycle and settlement, a realization run in slices once: as its last slice (its slices in
+    one study, or going on in another study of `paths`)."""
+    studies = [(path, StudyRuns(path)) for path in paths]
+    for path, study in studies:
+        earlier = continued(study.runs) | continuedElsewhere(study, [s for _, s in studies if s is not study])
         for run in study.runs:
             c = None if run.runId in earlier else run.cycles
             if c is not None and 'settlement' in c:
