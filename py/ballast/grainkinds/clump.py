@@ -110,7 +110,7 @@ class ClumpKind(GrainKind):
     oneSphere = False
 
     def __init__(self):
-        self._owners = (None, None)   # ((epoch, signature, len(O.bodies)), (member -> clump map, free spheres))
+        self._owners = (None, None)   # ((epoch, signature, len(O.bodies)), what _scene gives)
 
     def isGrain(self, body):
         """A clump, or a free sphere (a piece of one member of a split clump, or a sphere put in the scene)."""
@@ -142,21 +142,39 @@ class ClumpKind(GrainKind):
     def _ownerMap(self):
         """(Array: body id -> the clump it belongs to (itself when not a member), ids of the free spheres); rebuilt
         when the scene's bodies change (runtime epoch, signature, number of ids)."""
+        return self._scene()[:2]
+
+    def _scene(self):
+        """(own, free, members, clumps, index, row, member volumes, clump volumes), rebuilt when the scene's bodies
+        change (runtime epoch, signature: a member added, erased or worn, a clump split; number of ids): own and free
+        as _ownerMap; the member ids, the clumps they belong to (sorted) and each member's index among them; row: body
+        id -> its row among the bodies there are (the order of YADE's C++ readers, harvest.positions); the members'
+        sphere volumes and the clumps' union volumes [m^3], which change only with the signature."""
         key = (runtime.epoch(), self.signature(), len(O.bodies))
         if self._owners[0] != key:
-            own = np.arange(len(O.bodies), dtype=np.int64)
-            pairs, free = [], []
+            nb = len(O.bodies)
+            own = np.arange(nb, dtype=np.int64)
+            row = np.full(nb, -1, dtype=np.int64)
+            pairs, free, radii = [], [], []
+            k = -1
             for b in O.bodies:
                 if b is None:
                     continue
+                k += 1
+                row[b.id] = k
                 if b.isClumpMember:
                     pairs.append((b.id, b.clumpId))
+                    radii.append(b.shape.radius)
                 elif _isSphere(b):
                     free.append(b.id)
             if pairs:
                 p = np.array(pairs, dtype=np.int64)
                 own[p[:, 0]] = p[:, 1]
-            self._owners = (key, (own, np.array(free, dtype=np.int64)))
+            members = np.nonzero(own != np.arange(nb))[0]   # sorted ids, as pairs came in id order
+            clumps = np.unique(own[members])
+            self._owners = (key, (own, np.array(free, dtype=np.int64), members, clumps,
+                                  np.searchsorted(clumps, own[members]), row, sphereVolume(np.array(radii, dtype=float)),
+                                  self.volumes(clumps) if len(clumps) else np.zeros(0)))
         return self._owners[1]
 
     def grainOf(self, bodyIds):
@@ -168,11 +186,11 @@ class ClumpKind(GrainKind):
         """Love-Weber stress [Pa] of every clump as one grain, (len(O.bodies), 3, 3) by body id (rows of
         other bodies zero): sigma V = sum_m [sigma_m V_m + F_m (x) (x_m - X)] (ClumpStress.hpp), sigma_m
         YADE's bodyStressTensors (V_m = 4/3 pi r_m^3), F_m the member's contact forces summed here. A free
-        sphere's row is YADE's own tensor, as the sphere kind's."""
+        sphere's row is YADE's own tensor, as the sphere kind's. Positions come from YADE's C++ reader, what
+        changes only with the bodies from the cache of _scene: no Python loop over the members."""
         nb = len(O.bodies)
         out = np.zeros((nb, 3, 3))
-        own, free = self._ownerMap()
-        members = np.nonzero(own != np.arange(nb))[0]
+        own, free, members, clumps, index, row, memberVolumes, clumpVolumes = self._scene()
         if len(members) == 0 and len(free) == 0:
             return out
         S = _ballast.matricesToArray(utils.bodyStressTensors())
@@ -186,13 +204,9 @@ class ClumpKind(GrainKind):
             i1, i2 = a[:, 0].astype(np.int64), a[:, 1].astype(np.int64)
             np.add.at(F, i1, -a[:, 2:])    # YADE's force f acts on id2, -f on id1
             np.add.at(F, i2, a[:, 2:])
-        clumps = np.unique(own[members])
-        index = np.searchsorted(clumps, own[members])
-        pos = np.array([tuple(O.bodies[int(m)].state.pos) for m in members], dtype=float)
-        radii = np.array([O.bodies[int(m)].shape.radius for m in members], dtype=float)
-        X = np.array([tuple(O.bodies[int(k)].state.pos) for k in clumps], dtype=float)
-        out[clumps] = _ballast.clumpStresses(S[members], sphereVolume(radii), F[members], pos, index, X,
-                                             self.volumes(clumps))
+        x = np.array([utils.coordsAndDisplacements(axis)[0] for axis in range(3)], dtype=float).reshape(3, -1).T
+        out[clumps] = _ballast.clumpStresses(S[members], memberVolumes, F[members], x[row[members]], index,
+                                             x[row[clumps]], clumpVolumes)
         return out
 
     def crush(self, bid, stress, fragments, keepMass):
