@@ -3,7 +3,9 @@ equal grains (r_eq 16 mm, the mean of 20.5-44.5 mm) settling in a box of five st
 (the linear law), clumps of 8 spheres (the default shape) and YADE's polyhedra of 14 vertices (the volumetric law),
 each at 27 grains and the first two at 300 too, side by side in one run: CPU seconds per step over `steps` steps
 after a warm-up in which the grains fall into contact, per grain-step, the contacts then, and the ratios to the
-spheres of the same count. A benchmark, not a test; about three minutes.
+spheres of the same count; and the cost of a crushing check (the kind's crushing engine checking every step at a
+strength no grain reaches, in blocks interleaved with the plain ones on the same bed). A benchmark, not a test;
+about five minutes.
 
     yade -n -x bench/bench_grains.py [--steps 1000] [--out bench/grains.json]
 
@@ -21,6 +23,7 @@ import numpy as np
 from yade import O, Quaternion, Vector3, utils
 
 from ballast import grainkinds
+from ballast.engines import BallastCrushEngine, PolyhedronCrushEngine
 from ballast.experiments.scene import engines, materials, polyhedronEngines, polyhedronMaterials
 from ballast.grainkinds import clump, clumpshapes, polyhedron
 
@@ -81,20 +84,41 @@ def build(kind, n, seed=1):
     return grainkinds.current().ids()
 
 
-def measure(kind, n, steps):
+def crushEngines(kind):
+    """The kind's crushing engine checking every step at a strength no grain reaches (the check's cost alone)."""
+    if kind == 'polyhedron':
+        crush = PolyhedronCrushEngine(ft0=1e15, rMin=0.0, seed=1, adjustDt=False, iterPeriod=1, label='crush')
+        crush.floor()
+        return crush.engines()
+    return [BallastCrushEngine(ft0=1e15, m=1.0, rMin=0.0, seed=1, adjustDt=False, iterPeriod=1, label='crush')]
+
+
+def measure(kind, n, steps, blocks=5):
+    """The bed's steps timed in `blocks` pairs of blocks, without and with a crushing check at every step (the kind's
+    engine at a strength no grain reaches, dead in the first block of a pair), so that both see the same bed."""
     t0 = time.process_time()
     ids = build(kind, n)
     built = time.process_time() - t0
     O.run(int(WARMUP / O.dt), True)
-    t0, w0 = time.process_time(), time.perf_counter()
-    O.run(steps, True)
-    cpu = (time.process_time() - t0) / steps
-    row = {'kind': kind, 'grains': len(ids), 'steps': steps, 'dt': O.dt, 'cpuPerStep': cpu,
-           'cpuPerGrainStep': cpu / len(ids), 'wallPerStep': (time.perf_counter() - w0) / steps,
-           'contacts': sum(1 for i in O.interactions if i.isReal), 'buildSeconds': built,
-           'lowestGrain': float(min(O.bodies[int(i)].state.pos[2] for i in ids))}
-    print('%-10s %4d grains  %8.3f ms a step  %8.3f us a grain-step  %4d contacts' % (
-        kind, row['grains'], 1e3 * cpu, 1e6 * row['cpuPerGrainStep'], row['contacts']), flush=True)
+    crush = crushEngines(kind)
+    O.engines = list(O.engines) + crush
+    cpu, wall, per = {False: 0.0, True: 0.0}, 0.0, max(steps // blocks, 1)
+    for _ in range(blocks):
+        for on in (False, True):
+            for e in crush:
+                e.dead = not on
+            t0, w0 = time.process_time(), time.perf_counter()
+            O.run(per, True)
+            cpu[on] += time.process_time() - t0
+            wall += 0.0 if on else time.perf_counter() - w0
+    plain, check = cpu[False] / (per * blocks), (cpu[True] - cpu[False]) / (per * blocks)
+    contacts = sum(1 for i in O.interactions if i.isReal)
+    row = {'kind': kind, 'grains': len(ids), 'steps': per * blocks, 'dt': O.dt, 'cpuPerStep': plain,
+           'cpuPerGrainStep': plain / len(ids), 'wallPerStep': wall / (per * blocks), 'contacts': contacts,
+           'buildSeconds': built, 'lowestGrain': float(min(O.bodies[int(i)].state.pos[2] for i in ids)),
+           'cpuPerCheck': check, 'cpuPerGrainCheck': check / len(ids)}
+    print('%-10s %4d grains  %8.3f ms a step  %8.3f us a grain-step  %4d contacts  a crushing check %8.3f ms' % (
+        kind, row['grains'], 1e3 * plain, 1e6 * row['cpuPerGrainStep'], contacts, 1e3 * check), flush=True)
     return row
 
 
