@@ -67,6 +67,21 @@ def test_per_seed_and_per_condition_by_hand(tmp_path):
     assert '| confining=10000 | 3 | 1 | 12 | 0 | 1 (in cycle 2) |' in text
 
 
+def test_a_cycle_a_jump_went_over_is_read_on_the_jumps_log_law(tmp_path):
+    """A jumping run's cycles.csv has no row for the cycles it jumped: cycle 5 between the simulated 3 and 10 is the
+    straight line in ln N between their totals (by hand); a cycle past the last row is not reached."""
+    root = tmp_path / 'j'
+    records(root, {'j1': (1, 60e3, [0.01, 0.02, 0.03, 0.05, 0.06], [0, 0, 0, 0.01, 0.012], None, [(0, 0.0)])})
+    c = pd.read_csv(root / 'runs' / 'j1' / 'cycles.csv')
+    c['cycle'] = [1, 2, 3, 10, 11]
+    c.to_csv(root / 'runs' / 'j1' / 'cycles.csv', index=False)
+    seeds = conditions.realizationTable([str(root)], ['confining'], ['axialStrain'], [3, 5, 10, 12]).set_index('cycle')
+    t3, t10 = 0.03, 0.05 + 0.01
+    assert seeds.axialStrain[3] == pytest.approx(t3) and seeds.axialStrain[10] == pytest.approx(t10)
+    assert seeds.axialStrain[5] == pytest.approx(t3 + (t10 - t3) * math.log(5 / 3) / math.log(10 / 3), rel=1e-12)
+    assert 12 not in seeds.index
+
+
 def test_a_realization_whose_slices_go_on_in_another_study_counts_once(tmp_path):
     """Seed 1's first slice in study 'first', its second (continued from the first's state, its cycles.csv holding
     every cycle) in study 'second'; seed 2 in 'first' only: one condition of two seeds, seed 1 read from its last

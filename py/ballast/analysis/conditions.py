@@ -3,7 +3,7 @@ table). A condition is the runs that share the values of the parameters named (`
 in whichever of the studies given they lie (named by those values: 'confining=10000 qMax=230000 f=5'),
 its realizations their seeds, a realization run in slices read from its last slice (settlement.realizationRuns).
 Per realization and cycle N: each quantity's total at N (a strain with its jumped cycles' share,
-curvefit.total), the breakage index BBI of the last grading taken at or before N, or, for a specimen that failed
+curvefit.total; at an N a jump went over, the straight line in ln N between the simulated cycles around it), the breakage index BBI of the last grading taken at or before N, or, for a specimen that failed
 (summary.json stoppedBy failure) before N, the cycle it failed in. Per condition and N: how many seeds reached N and
 failed before it, and each quantity's mean, smallest and largest over those that reached it. Any cyclic experiment
 (the shared cycles.csv); NumPy, pandas, no YADE."""
@@ -14,6 +14,16 @@ import pandas as pd
 
 from .curvefit import total
 from .settlement import realizationRuns
+
+
+def atCycle(cycle, values, k, N):
+    """The value at cycle N of a quantity given at `cycle` (row k the first at or after N): its row's, or for an N that
+    a jump went over (between rows k-1 and k) the straight line in ln N between them, which is the jump's own law
+    (a jumped cycle's share is b ln(N / n), the simulated part unchanged within the jump)."""
+    if cycle[k] == N:
+        return float(values[k])
+    a, b = math.log(cycle[k - 1]), math.log(cycle[k])
+    return float(values[k - 1] + (values[k] - values[k - 1]) * (math.log(N) - a) / (b - a))
 
 
 def realizationTable(paths, by, quantities, at):
@@ -30,14 +40,16 @@ def realizationTable(paths, by, quantities, at):
         totals = {q: total(c, q) for q in quantities}
         failed = (run.summary or {}).get('failedInCycle')
         grading = run.table('grading')
+        cycle = c['cycle'].to_numpy()
         for N in at:
-            hit = np.flatnonzero(c['cycle'].to_numpy() == N)
             lost = failed is not None and failed <= N
-            if not len(hit) and not lost:
+            k = int(np.searchsorted(cycle, N))   # the first row at or after N
+            reached = k < len(cycle) and (cycle[k] == N or k > 0)
+            if not reached and not lost:
                 continue   # not reached (yet)
             row = {'condition': label, 'runId': run.runId, 'seed': run.params.get('seed'), 'cycle': int(N),
                    'failedInCycle': float(failed) if lost else math.nan}
-            row.update({q: float(totals[q][hit[0]]) if len(hit) and not lost else math.nan for q in quantities})
+            row.update({q: atCycle(cycle, totals[q], k, N) if reached and not lost else math.nan for q in quantities})
             graded = grading[grading['cycle'] <= N] if grading is not None and 'BBI' in grading else []
             row['BBI'] = float(graded['BBI'].iloc[-1]) if len(graded) else math.nan
             rows.append(row)
