@@ -182,9 +182,11 @@ class Cyclic:
         choice, before = self.stepChoice, self.stepChoice.step
         step = choice.cycleClosed(inertialMax, responseRatio)
         if not choice.met[-1]:
+            ratio = ('%.3g' % responseRatio if math.isfinite(responseRatio)
+                     else 'not measured: no resilient deformation this cycle')
             self.say('cycle %d broke the quasi-static bounds (largest inertial number %.3g, bound %g; response ratio '
-                     '%.3g, at least %g): the next cycle at the paper\'s step %.3g s' % (
-                         cycle, inertialMax, choice.bound, responseRatio, choice.ratioMin, step))
+                     '%s, at least %g): the next cycle at the paper\'s step %.3g s' % (
+                         cycle, inertialMax, choice.bound, ratio, choice.ratioMin, step))
         if step != before:
             timestep.changeDensityStep(step, step / self.p['dtSafety'], choice.loaded)
 
