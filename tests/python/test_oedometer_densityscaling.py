@@ -37,6 +37,15 @@ def expectedFactors():
     return np.array([b.state.densityScaling for b in bs]), np.minimum(1.0, (own / (STEP / 0.8)) ** 2)
 
 
+def test_the_run_warns_that_density_scaling_changes_the_avalanches(run):
+    """Said when the run starts and kept in summary.json; a run without scaling has no warning."""
+    exp, s, root = run
+    assert len(s['warnings']) == 1 and s['warnings'][0].startswith('densityStep 2e-06: density scaling changes whether')
+    assert 'avalanches' in s['warnings'][0]
+    assert Oedometer(**WEAK).warnings() == []
+    assert Oedometer(quasiStatic=1e-3, **WEAK).warnings()[0].startswith('quasiStatic 0.001: density scaling')
+
+
 def test_every_grain_and_fragment_scaled_to_the_step(run):
     exp, s, _ = run
     assert s['nCrushed'] > 0 and s['nAbraded'] > 0  # fragments and shrunk grains exist

@@ -97,9 +97,20 @@ class Oedometer(Cyclic, Experiment):
         if hasattr(self.packing, 'checkOutputs'):
             self.packing.checkOutputs(self)
 
+    def warnings(self):
+        """What the run should know of its parameters, said when it starts and kept in summary.json: density scaling
+        (quasiStatic or densityStep) changes whether this oedometer avalanches (docs/performance.md)."""
+        p = self.p
+        return ['%s %g: density scaling changes whether the oedometer avalanches (seed 2 at 8 Hz with Fmin 150 kN: 212 '
+                'grains crushed in cycle 1 under quasiStatic 1e-3, 1 at the paper\'s step; over 20 seeds it moved the '
+                'share of avalanching runs by 10-25 points: docs/performance.md); for studies of means that accept it, '
+                'not for reproducing a realization' % (k, p[k]) for k in ('quasiStatic', 'densityStep') if p[k] > 0]
+
     def prepare(self):
         """The packing (built, or loaded from the store), settled in the cylinder."""
         self.openRunDirectory()
+        for w in self.warnings():
+            self.say('warning: ' + w)
         self.adopt()
         self.rig = self.packing.prepare(self)
         self.adopt()
