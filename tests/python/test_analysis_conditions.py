@@ -92,6 +92,14 @@ def test_a_realization_whose_slices_go_on_in_another_study_counts_once(tmp_path)
                      continues={'s1-more': '../first/runs/s1/state-end.yade.gz'})
     seeds = conditions.realizationTable([first, second], ['confining'], ['axialStrain'], [2, 4])
     assert sorted(seeds.runId.unique()) == ['s1-more', 's2']   # s1 is the first slice of s1-more
+    short = records(tmp_path / 'short', {'a2': (2, 60e3, [0.02, 0.03], None, None, [(0, 0.0)])})
+    other = records(tmp_path / 'other', {'b1': (1, 10e3, [0.1, 0.2], None, None, [(0, 0.0)])})
+    long = records(tmp_path / 'long', {'c1': (3, 60e3, [0.01, 0.02, 0.025, 0.03], None, None, [(0, 0.0)])})
+    order = conditions.conditionTable(conditions.realizationTable([short, other, long], ['confining'], ['axialStrain'],
+                                                                  [2, 4]), ['axialStrain'])
+    # each condition's cycles together and in order, whichever study brought a cycle first
+    assert list(zip(order.condition, order.cycle)) == [('confining=60000', 2), ('confining=60000', 4),
+                                                        ('confining=10000', 2)]
     table = conditions.conditionTable(seeds, ['axialStrain']).set_index(['condition', 'cycle'])
     assert list(table.index) == [('confining=60000', 2), ('confining=60000', 4)]
     assert table.loc[('confining=60000', 4)].seeds == 2

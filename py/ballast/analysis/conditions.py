@@ -63,6 +63,8 @@ def conditionTable(frame, quantities):
     cycles they failed in), and per quantity (and BBI) the mean, smallest and largest over the seeds that reached
     it."""
     rows = []
+    order = {c: k for k, c in enumerate(dict.fromkeys(frame['condition']))}   # conditions as they first come
+    frame = frame.assign(_order=frame['condition'].map(order)).sort_values(['_order', 'cycle'], kind='stable')
     for (label, N), g in frame.groupby(['condition', 'cycle'], sort=False):
         ok = g[g['failedInCycle'].isna()]
         lost = g[g['failedInCycle'].notna()]
