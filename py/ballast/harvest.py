@@ -154,12 +154,18 @@ def stresses(ids):
     return _stressCache[1][ids]
 
 
+def bodyPositions():
+    """(n, 3) centres [m] of every body there is (None skipped), in id order, read in C++ (YADE's
+    utils.coordsAndDisplacements, an axis at a time): no Python loop over the bodies."""
+    return np.array([utils.coordsAndDisplacements(axis)[0] for axis in range(3)], dtype=float).reshape(3, -1).T
+
+
 def positions():
     """(grain table, (n, 3) centres [m] of its grains), read in C++: YADE's utils.coordsAndDisplacements gives an
     axis of every body there is, in id order, without a Python loop over the bodies (a membrane update read them
     one by one in 4 ms of its 13 for 1 300 grains). A table that no longer matches the bodies (one erased or
     added by hand within this step) is rebuilt."""
-    x = np.array([utils.coordsAndDisplacements(axis)[0] for axis in range(3)], dtype=float).reshape(3, -1).T
+    x = bodyPositions()
     table = grains()
     if table.nBodies != len(x):
         refresh()

@@ -204,7 +204,8 @@ class ClumpKind(GrainKind):
             i1, i2 = a[:, 0].astype(np.int64), a[:, 1].astype(np.int64)
             np.add.at(F, i1, -a[:, 2:])    # YADE's force f acts on id2, -f on id1
             np.add.at(F, i2, a[:, 2:])
-        x = np.array([utils.coordsAndDisplacements(axis)[0] for axis in range(3)], dtype=float).reshape(3, -1).T
+        from ..harvest import bodyPositions   # here: harvest reads the grain kinds
+        x = bodyPositions()
         out[clumps] = _ballast.clumpStresses(S[members], memberVolumes, F[members], x[row[members]], index,
                                              x[row[clumps]], clumpVolumes)
         return out
