@@ -1,5 +1,5 @@
-"""The Debian package: `cpack -G DEB` of setup.sh's build (CMakeLists.txt; it installs under /usr) gives yade-ballast_<version>_<arch>.deb,
-whose control file depends on Debian's yade and the Boost libraries the binding links, which apt accepts
+"""The Debian package: `cpack -G DEB` of setup.sh's build (CMakeLists.txt; it installs under /usr)
+gives yade-ballast_<version>_<arch>.deb, whose control file depends on Debian's yade and the Boost libraries the binding links, which apt accepts
 next to the installed yade (a simulated install), and whose files, unpacked into a temporary root,
 give a working `from ballast import BallastCrushEngine` in yade. Nothing is installed on this machine:
 the /usr/local install the other tests use stays as it is."""

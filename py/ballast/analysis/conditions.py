@@ -3,7 +3,8 @@ table). A condition is the runs that share the values of the parameters named (`
 in whichever of the studies given they lie (named by those values: 'confining=10000 qMax=230000 f=5'),
 its realizations their seeds, a realization run in slices read from its last slice (settlement.realizationRuns).
 Per realization and cycle N: each quantity's total at N (a strain with its jumped cycles' share,
-curvefit.total; at an N a jump went over, the straight line in ln N between the simulated cycles around it), the breakage index BBI of the last grading taken at or before N, or, for a specimen that failed
+curvefit.total; at an N a jump went over, the straight line in ln N between the simulated cycles around it), the
+breakage index BBI of the last grading taken at or before N, or, for a specimen that failed
 (summary.json stoppedBy failure) before N, the cycle it failed in. Per condition and N: how many seeds reached N and
 failed before it, and each quantity's mean, smallest and largest over those that reached it. Any cyclic experiment
 (the shared cycles.csv); NumPy, pandas, no YADE."""
@@ -32,7 +33,8 @@ def realizationTable(paths, by, quantities, at):
     fail by then). ValueError naming a quantity a run did not write."""
     rows = []
     for path, run, c in realizationRuns(paths, by):
-        label = path.partition('[')[2].rstrip(']') or path   # by the values alone: a condition's runs may lie in several studies
+        # by the values alone: a condition's runs may lie in several studies
+        label = path.partition('[')[2].rstrip(']') or path
         missing = [q for q in quantities if q not in c]
         if missing:
             raise ValueError('conditions: %s wrote no %s in cycles.csv; it has %s' % (

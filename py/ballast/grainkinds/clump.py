@@ -173,7 +173,8 @@ class ClumpKind(GrainKind):
             members = np.nonzero(own != np.arange(nb))[0]   # sorted ids, as pairs came in id order
             clumps = np.unique(own[members])
             self._owners = (key, (own, np.array(free, dtype=np.int64), members, clumps,
-                                  np.searchsorted(clumps, own[members]), row, sphereVolume(np.array(radii, dtype=float)),
+                                  np.searchsorted(clumps, own[members]), row,
+                                  sphereVolume(np.array(radii, dtype=float)),
                                   self.volumes(clumps) if len(clumps) else np.zeros(0)))
         return self._owners[1]
 

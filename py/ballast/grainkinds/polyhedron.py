@@ -59,7 +59,8 @@ def hullVolume(vertices):
 
 def randomVertices(rEq, seed, n=VERTICES):
     """(n, 3) vertices [m] about the origin whose convex hull has the volume 4/3 pi rEq^3: n points uniform on a unit
-    sphere (a normalised Gaussian triple each, from the seed), scaled by the hull's volume from SciPy's Qhull. A roundish grain with n vertices: the choice
+    sphere (a normalised Gaussian triple each, from the seed), scaled by the hull's volume from SciPy's
+    Qhull. A roundish grain with n vertices: the choice
     of this comparison, not a measured ballast shape."""
     if not rEq > 0:
         raise ValueError('rEq: expected a radius > 0 [m], got %r' % (rEq,))

@@ -263,7 +263,8 @@ class TriaxialTest(Cyclic, Experiment):
             p.period(), p['confining'] / 1e3, O.dt, rec.period / O.dt))
         if self.cyclesDone() < target:
             self.runUntil(lambda: self.cyclesDone() >= target or self.failed is not None,
-                          tEnd=tEnd + 2 * rec.period / p['samples'], phase='load', checkEvery=50, simSpan=tEnd - O.time, simStart=O.time,
+                          tEnd=tEnd + 2 * rec.period / p['samples'], phase='load', checkEvery=50,
+                          simSpan=tEnd - O.time, simStart=O.time,
                           extra=lambda: 'cycle %d of %d, axial strain %.3f %%, volumetric %.3f %%, %d crushed' % (
                               self.cyclesDone(), target, 100 * (rec.samples[-1][5] if rec.samples else 0),
                               100 * (rec.samples[-1][6] if rec.samples else 0), rec.samples[-1][9] if rec.samples else 0))
