@@ -6,13 +6,16 @@ quantity of cycles.csv (with the jumped cycles' share), BBI and failures, per se
         --quantities axialStrain volumetricStrain --at 10 100 1000 10000 --out docs/studies/triax-predict
 
 writes conditions-seeds.csv (a row per realization and cycle), conditions.csv (a row per condition and cycle: the
-mean, smallest and largest over the seeds, the failures) and conditions.md (that table in Markdown, strains in %)."""
+mean, smallest and largest over the seeds, the failures) and conditions.md (that table in Markdown, strains in %).
+With --curve COLUMN=PATH (as scripts/curve_fit.py) a measured curve's value at each N stands beside its quantity: a
+calibration's fit, seed by seed and over the seeds."""
 import argparse
 import os
 import sys
 
 from ballast.analysis import conditions
-from ballast.study.options import StudyError, cycleNumber
+from ballast.experiments.triaxial.strains import CurveError
+from ballast.study.options import StudyError, cycleNumber, measuredCurve
 
 
 def main(argv=None):
@@ -22,14 +25,18 @@ def main(argv=None):
     ap.add_argument('--quantities', nargs='+', default=['axialStrain', 'volumetricStrain'], metavar='COLUMN',
                     help='columns of cycles.csv (default axialStrain volumetricStrain)')
     ap.add_argument('--at', type=cycleNumber, nargs='+', default=[10, 100], metavar='N', help='cycles (default 10 100)')
+    ap.add_argument('--curve', type=measuredCurve, action='append', default=[], metavar='COLUMN=PATH',
+                    help='a quantity and the measured curve to show beside it (N,<name> CSV)')
     ap.add_argument('--out', required=True, help='where conditions-seeds.csv, conditions.csv and conditions.md go')
     a = ap.parse_args(argv)
     try:
         seeds = conditions.realizationTable(a.studies, a.by, a.quantities, a.at)
-    except (StudyError, ValueError) as e:
+        table = conditions.conditionTable(seeds, a.quantities)
+        if a.curve:
+            table = conditions.withMeasured(table, a.quantities, dict(a.curve))
+    except (StudyError, CurveError, ValueError) as e:
         print('conditions.py: %s' % e, file=sys.stderr)
         return 2
-    table = conditions.conditionTable(seeds, a.quantities)
     os.makedirs(a.out, exist_ok=True)
     seeds.to_csv(os.path.join(a.out, 'conditions-seeds.csv'), index=False, float_format='%.6g')
     table.to_csv(os.path.join(a.out, 'conditions.csv'), index=False, float_format='%.6g')

@@ -14,22 +14,13 @@ import sys
 
 from ballast.analysis import curvefit
 from ballast.experiments.triaxial.strains import CurveError
-from ballast.study.options import StudyError, cycleNumber
-
-
-def curve(text):
-    """--curve's value: COLUMN=PATH."""
-    column, sep, path = text.partition('=')
-    if not sep or not column or not path:
-        raise argparse.ArgumentTypeError('%r; allowed: COLUMN=PATH, a column of cycles.csv and a measured curve' % text)
-    return column, path
-
+from ballast.study.options import StudyError, cycleNumber, measuredCurve
 
 
 def main(argv=None):
     ap = argparse.ArgumentParser(prog='scripts/curve_fit.py', description=__doc__.split('\n\n')[0])
     ap.add_argument('studies', nargs='+', help='studies (or their records)')
-    ap.add_argument('--curve', type=curve, action='append', required=True, metavar='COLUMN=PATH',
+    ap.add_argument('--curve', type=measuredCurve, action='append', required=True, metavar='COLUMN=PATH',
                     help='a column of cycles.csv and the measured curve it is held against (N,<name> CSV)')
     ap.add_argument('--at', type=cycleNumber, nargs='+', default=[1, 10, 100], metavar='N', help='cycles (default 1 10 100)')
     ap.add_argument('--params', nargs='*', default=[], metavar='NAME', help='parameters of the runs to list beside them')

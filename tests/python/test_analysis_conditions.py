@@ -123,3 +123,39 @@ def test_the_scripts_run_without_yade_and_refuse_a_missing_quantity(tmp_path):
                           'axialStrain=' + str(tmp_path / 'none.csv'), '--out', str(tmp_path / 'f')],
                          capture_output=True, text=True, env=env)
     assert fit.returncode == 2 and 'No module named' not in fit.stderr, fit.stderr
+
+
+def test_a_measured_curve_stands_beside_its_quantity_read_in_log_n(tmp_path):
+    """--curve: the measured value at each N beside the seeds' mean, read as curve_fit reads it: a monotone curve
+    (its running median is itself) interpolated in log N, by hand at N = 3 between the points at 1 and 10; a curve of
+    a quantity not asked for and a malformed curve are refused in one line."""
+    root = records(tmp_path / 'p', RUNS)
+    curve = tmp_path / 'axial.csv'
+    curve.write_text('N,axial_strain\n1,0.01\n10,0.02\n100,0.04\n')
+    table = conditions.conditionTable(conditions.realizationTable([root], ['confining'], ['axialStrain'], [1, 3]),
+                                      ['axialStrain'])
+    fitted = conditions.withMeasured(table, ['axialStrain'], {'axialStrain': str(curve)})
+    at3 = fitted[(fitted.condition == 'confining=60000') & (fitted.cycle == 3)].iloc[0]
+    assert at3.axialStrain_measured == pytest.approx(0.01 + 0.01 * math.log(3) / math.log(10), rel=1e-12)
+    assert fitted[fitted.cycle == 1].axialStrain_measured.tolist() == [0.01, 0.01]
+    late = conditions.withMeasured(table, ['axialStrain'], {'axialStrain': str(curve)})
+    late.loc[late.cycle == 1, 'axialStrain_measured'] = math.nan   # a curve that starts after N = 1
+    assert '| confining=60000 | 1 | 2 | 1.5 [1, 2] | - |' in conditions.markdown(late, ['axialStrain'])
+    text = conditions.markdown(fitted, ['axialStrain'])
+    assert '| axialStrain [%] | measured [%] | BBI |' in text
+    assert '| confining=60000 | 3 | 2 | 4.5 [3, 6] | %.3g | 0.006 [0.004, 0.008] |  |' % (100 * at3.axialStrain_measured) \
+        in text
+    with pytest.raises(ValueError, match='volumetricStrain, not among the quantities'):
+        conditions.withMeasured(table, ['axialStrain'], {'volumetricStrain': str(curve)})
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join(p for p in sys.path if 'yade' not in p))
+    bad = tmp_path / 'bad.csv'
+    bad.write_text('N,axial_strain\n1,0.01\nten,0.02\n')
+    r = subprocess.run([sys.executable, SCRIPT, root, '--by', 'confining', '--at', '1', '--quantities', 'axialStrain',
+                        '--curve', 'axialStrain=%s' % bad, '--out', str(tmp_path / 'o')],
+                       capture_output=True, text=True, env=env)
+    assert r.returncode == 2 and r.stderr.count('\n') == 1 and 'line 3' in r.stderr, r.stderr
+    r = subprocess.run([sys.executable, SCRIPT, root, '--by', 'confining', '--at', '1', '--quantities', 'axialStrain',
+                        '--curve', 'axialStrain=%s' % curve, '--out', str(tmp_path / 'o')],
+                       capture_output=True, text=True, env=env)
+    assert r.returncode == 0 and 'measured [%]' in r.stdout, r.stderr
+    assert pd.read_csv(tmp_path / 'o' / 'conditions.csv').axialStrain_measured.tolist() == [0.01, 0.01]

@@ -6,14 +6,15 @@ Per realization and cycle N: each quantity's total at N (a strain with its jumpe
 curvefit.total; at an N a jump went over, the straight line in ln N between the simulated cycles around it), the
 breakage index BBI of the last grading taken at or before N, or, for a specimen that failed
 (summary.json stoppedBy failure) before N, the cycle it failed in. Per condition and N: how many seeds reached N and
-failed before it, and each quantity's mean, smallest and largest over those that reached it. Any cyclic experiment
-(the shared cycles.csv); NumPy, pandas, no YADE."""
+failed before it, and each quantity's mean, smallest and largest over those that reached it, beside a measured curve's
+value at N where one is given (a calibration's fit). Any cyclic experiment (the shared cycles.csv); NumPy, pandas, no
+YADE."""
 import math
 
 import numpy as np
 import pandas as pd
 
-from .curvefit import total
+from .curvefit import measured, total
 from .settlement import realizationRuns
 
 
@@ -81,10 +82,30 @@ def conditionTable(frame, quantities):
     return pd.DataFrame(rows)
 
 
+def withMeasured(table, quantities, curves):
+    """The condition table with <q>_measured, the measured curve of `curves` {quantity: path} read at each row's
+    cycle as curvefit reads it (a running median in N, interpolated in log N). ValueError for a curve of a quantity
+    the table does not hold; readReference's CurveError for a malformed file."""
+    extra = sorted(set(curves) - set(quantities))
+    if extra:
+        raise ValueError('conditions: a measured curve is given for %s, not among the quantities (%s)' % (
+            ', '.join(extra), ', '.join(quantities)))
+    cycles = sorted(set(int(n) for n in table['cycle']))
+    values = measured(curves, cycles)
+    out = table.copy()
+    for q, v in values.items():
+        out[q + '_measured'] = out['cycle'].map(dict(zip(cycles, (float(x) for x in v))))
+    return out
+
+
 def markdown(table, quantities, scale=100.0, unit='%'):
     """The condition table as a Markdown table: a row per condition and cycle, each quantity as mean [min, max]
-    times `scale` (in `unit`), BBI as mean [min, max], and the seeds that failed before that cycle."""
-    head = ['condition', 'N', 'seeds'] + ['%s [%s]' % (q, unit) for q in quantities] + ['BBI', 'failed before N']
+    times `scale` (in `unit`) and beside it its measured value where the table holds one (withMeasured), BBI as mean
+    [min, max], and the seeds that failed before that cycle."""
+    head = ['condition', 'N', 'seeds']
+    for q in quantities:
+        head += ['%s [%s]' % (q, unit)] + (['measured [%s]' % unit] if q + '_measured' in table else [])
+    head += ['BBI', 'failed before N']
     lines = ['| ' + ' | '.join(head) + ' |', '|' + '---|' * len(head)]
 
     def cell(row, q, k):
@@ -94,7 +115,11 @@ def markdown(table, quantities, scale=100.0, unit='%'):
         return '%.3g [%.3g, %.3g]' % (m, lo, hi) if row['seeds'] > 1 else '%.3g' % m
     for row in table.to_dict('records'):
         failed = '%d (in cycle %s)' % (row['failed'], row['failedInCycles'].replace(' ', ', ')) if row['failed'] else ''
-        lines.append('| ' + ' | '.join([row['condition'], str(row['cycle']), str(row['seeds'])] +
-                                        [cell(row, q, scale) for q in quantities] + [cell(row, 'BBI', 1.0), failed]) +
-                     ' |')
+        cells = [row['condition'], str(row['cycle']), str(row['seeds'])]
+        for q in quantities:
+            cells.append(cell(row, q, scale))
+            if q + '_measured' in row:   # '-' where the curve does not reach N
+                m = row[q + '_measured']
+                cells.append('-' if math.isnan(m) else '%.3g' % (m * scale))
+        lines.append('| ' + ' | '.join(cells + [cell(row, 'BBI', 1.0), failed]) + ' |')
     return '\n'.join(lines) + '\n'

@@ -100,6 +100,14 @@ def addArguments(parser, *names):
         parser.add_argument(flag(name), *[SHORT[name]] if name in SHORT else [], **argument(name))
 
 
+def measuredCurve(text):
+    """An argparse type for --curve COLUMN=PATH: a column of cycles.csv and the measured curve it is held against."""
+    column, sep, path = text.partition('=')
+    if not sep or not column or not path:
+        raise argparse.ArgumentTypeError('%r; allowed: COLUMN=PATH, a column of cycles.csv and a measured curve' % text)
+    return column, path
+
+
 def cycleNumber(text):
     """An argparse type for a cycle number of cycles.csv (--at N ...): an integer from 1."""
     if not text.isdigit() or int(text) < 1:
