@@ -146,3 +146,30 @@ def test_clump_stress_binding_checks_its_arguments():
     S = np.arange(9.0).reshape(1, 3, 3)
     out = _ballast.clumpStresses(S, [2.0], np.array([[1.0, 2.0, 3.0]]), z3, np.array([0]), z3, [4.0])
     np.testing.assert_allclose(out[0], S[0] * 0.5, rtol=1e-15)
+
+
+def test_bounds_are_the_members_not_the_equivalent_sphere():
+    """Where a plate or a sleeper seats: a clump's box is its members' spheres' (by hand for a pair of members along
+    x), a free sphere's its centre -+ radius; the default clump lying flat stands lower than its centre + r_eq, which
+    seated the oedometer's plate above a bed of clumps (the bug this guards)."""
+    steel, ballast = _scene()
+    a = 0.015
+    pair = clump.appendClump([utils.sphere((0.1 - a, 0.2, 0.3), R, material=ballast),
+                              utils.sphere((0.1 + a, 0.2, 0.3), R, material=ballast)], unionVolume(
+                                  np.array([[-a, 0, 0], [a, 0, 0]]), np.array([R, R]))[0])
+    free = O.bodies.append(utils.sphere((-0.2, 0, 0.05), 0.012, material=ballast))
+    flat = clump.addClump((0.3, 0, 0.1), 0.02, ballast, seed=3)   # the long axis along x, the short along z
+    O.bodies.append(utils.wall(-1.0, axis=2, material=steel))
+    k = grainkinds.current()
+    lo, hi = k.bounds([pair, free, flat])
+    assert lo[0] == pytest.approx([0.1 - a - R, 0.2 - R, 0.3 - R], abs=1e-15)
+    assert hi[0] == pytest.approx([0.1 + a + R, 0.2 + R, 0.3 + R], abs=1e-15)
+    assert lo[1] == pytest.approx([-0.212, -0.012, 0.038], abs=1e-15)
+    assert hi[1] == pytest.approx([-0.188, 0.012, 0.062], abs=1e-15)
+    members = [O.bodies[i] for i in O.bodies[flat].shape.members.keys()]
+    top = max(b.state.pos[2] + b.shape.radius for b in members)
+    assert hi[2][2] == pytest.approx(top, abs=1e-15) and top < 0.1 + 0.02 * 0.9
+    assert lo[2][0] == pytest.approx(min(b.state.pos[0] - b.shape.radius for b in members), abs=1e-15)
+    assert k.tops([flat])[0] == hi[2][2]
+    from ballast.experiments import grains
+    assert grains.top() == pytest.approx(max(0.3 + R, 0.062, top), abs=1e-15)

@@ -40,11 +40,16 @@ def arrays():
     return k.centres(ids), k.radii(ids), k.masses(ids)
 
 
-def top():
-    """The height of the grains' highest point [m] (the kind's: for a sphere its centre plus its radius, for a
-    polyhedron its highest vertex), where a plate is seated."""
+def bounds():
+    """(lo, hi), each (n, 3) [m]: the box each grain fills, O.bodies order (the kind's: a sphere's centre -+ its
+    radius, a clump's members', a polyhedron's vertices'), where a plate or a sleeper is seated."""
     k = kind()
-    return float(np.max(k.tops(k.ids())))
+    return k.bounds(k.ids())
+
+
+def top():
+    """The height of the grains' highest point [m] (bounds), where a plate is seated."""
+    return float(np.max(bounds()[1][:, 2]))
 
 
 def volumes():

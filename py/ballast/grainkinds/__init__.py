@@ -12,7 +12,7 @@ The interface (:class:`GrainKind`) answers, for the grains of the current scene:
   excluded body is excluded by its kind, never by a group mask;
 * their geometry and inertia, as arrays over ids: centres [m], volumes [m^3], masses [kg], principal
   inertia [kg m^2], the equivalent radius r_eq [m] (of the sphere of the same volume), Young's moduli
-  [Pa]; what goes to a grading (sieve diameters, 2 r_eq [m]) and to VTK (a radius [m]);
+  [Pa], the box each grain fills (:meth:`~GrainKind.bounds`: where a plate or a sleeper seats on it); what goes to a grading (sieve diameters, 2 r_eq [m]) and to VTK (a radius [m]);
 * the stress of a grain (the Love-Weber fabric stress, eq. 3), as one array by body id read in C++,
   and a cheap C++ signature that changes whenever a grain is added, erased or resized (ballast.harvest
   caches on it);
@@ -111,10 +111,16 @@ class GrainKind:
         """The radius VTK draws a grain with [m]: r_eq."""
         return self.radii(ids)
 
+    def bounds(self, ids):
+        """(lo, hi), each (n, 3) [m]: the axis-aligned box each grain fills, where a plate or a sleeper is seated on
+        it; here its centre -+ r_eq (exact for a sphere; a kind whose grain is not its equivalent sphere overrides
+        it)."""
+        x, r = self.centres(ids), self.radii(ids)[:, None]
+        return x - r, x + r
+
     def tops(self, ids):
-        """The height of each grain's highest point [m]: its centre's z plus r_eq (exact for a sphere; a kind whose
-        grain reaches beyond r_eq overrides it)."""
-        return self.centres(ids)[:, 2] + self.radii(ids)
+        """The height of each grain's highest point [m] (bounds)."""
+        return self.bounds(ids)[1][:, 2]
 
     def pWaveTimeStep(self):
         """Eq. 5's critical step [s] of the scene's grains: YADE's PWaveTimeStep() (spheres, clump members)."""

@@ -142,9 +142,12 @@ class PolyhedronKind(GrainKind):
             out[ids] = S[ids] / self.volumes(ids)[:, None, None]
         return out
 
-    def tops(self, ids):
-        """The height of each polyhedron's highest vertex [m] (a loop over the grains: for seating a plate)."""
-        return np.array([float(np.max(globalVertices(i)[:, 2])) for i in ids], dtype=float)
+    def bounds(self, ids):
+        """(lo, hi) [m]: each polyhedron's vertices' smallest and largest coordinates (a loop over the grains: for
+        seating a plate)."""
+        v = [globalVertices(i) for i in ids]
+        return (np.array([np.min(a, axis=0) for a in v], dtype=float).reshape(-1, 3),
+                np.array([np.max(a, axis=0) for a in v], dtype=float).reshape(-1, 3))
 
     def grainOf(self, bodyIds):
         return np.asarray(bodyIds, dtype=np.int64)

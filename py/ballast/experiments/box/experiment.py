@@ -88,10 +88,10 @@ class BoxTest(Cyclic, Experiment):
     def seat(self):
         """The sleeper on the highest grain under its footprint, the engines, the time step, the seating load."""
         p, rig = self.p, self.rig
-        x, r, m = grains.arrays()
+        lo, hi = grains.bounds()   # the grains' own extent: a clump is not its equivalent sphere
         w, h, L = p['sleeperWidth'], p['sleeperHeight'], p.sleeperLength()
-        foot = np.abs(x[:, 0]) < w / 2 + r
-        z0 = float(np.max(x[foot, 2] + r[foot]))
+        foot = (lo[:, 0] < w / 2) & (hi[:, 0] > -w / 2)
+        z0 = float(np.max(hi[foot, 2]))
         rig.sleeperMat = FrictMat(young=p['steelYoungRatio'] * p['young'], poisson=p['steelPoisson'],
                                   frictionAngle=p['sleeperFriction'], density=p['sleeperMass'] / (w * h * L),
                                   label='sleeper')
@@ -108,7 +108,7 @@ class BoxTest(Cyclic, Experiment):
             direction=Vector3(0, 0, -1), wrap=True, label=LOAD)])
         O.dt = p['dtSafety'] * utils.PWaveTimeStep()
         self.say('seat: sleeper %.3g x %.3g x %.3g m, %.4g kg, on the bed at %.4f m (%d grains, porosity %.3f), %g N'
-                 % (w, L, h, p['sleeperMass'], z0, len(r), self.porosity, history.seat))
+                 % (w, L, h, p['sleeperMass'], z0, len(lo), self.porosity, history.seat))
         if p['cribDepth'] > 0:
             self.nCrib = bed.crib(self, z0)
         t0 = O.time

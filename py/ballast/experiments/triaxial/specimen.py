@@ -68,8 +68,7 @@ def prepare(exp):
     facets, base = mould(p, steel)
     rig = Rig(base, None, facets, ballast, steel)
     sample.reload(exp, doc, ballast, p['damping'])
-    x, r, _ = grains.arrays()
-    top = utils.wall(float(np.max(x[:, 2] + r)), axis=2, sense=-1, material=steel, color=STEEL_COLOR, mask=STEEL_MASK)
+    top = utils.wall(grains.top(), axis=2, sense=-1, material=steel, color=STEEL_COLOR, mask=STEEL_MASK)
     top.state.blockedDOFs = 'xyXYZ'
     top.state.mass = p['platenMass']
     top.state.inertia = Vector3(1, 1, 1)   # a wall has none; its rotations are blocked, but Newton divides by it
