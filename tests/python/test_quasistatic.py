@@ -87,7 +87,9 @@ def test_a_small_box_under_the_quasi_static_option_keeps_the_bound_or_says_so(tm
                  sleeperMass=5, dMin=0.02, dMax=0.03, young=3e9, prepYoung=3e8, seatLoad=300, peakLoad=4000, crush=False,
                  strength=1.5e10, f=10, cycles=5, progress=60)
     test = BoxTest(results=str(tmp_path), runId='qs', quasiStatic=1e-3, **small)
-    test.run()
+    s = test.run()
+    assert s['warnings'][0].startswith('quasiStatic 0.001: validated on the default box') and \
+        'not for the resilient deflection' in s['warnings'][0]   # what its validation found, said in the summary
     cyc = pd.read_csv(str(tmp_path / 'qs' / 'cycles.csv'))
     paper = test.p.startTimeStep()
     assert cyc.dt[0] == pytest.approx(4 * paper, rel=1e-6)
@@ -100,3 +102,18 @@ def test_a_small_box_under_the_quasi_static_option_keeps_the_bound_or_says_so(tm
             assert cyc.dt[k + 1] == pytest.approx(paper, rel=1e-6)
         else:
             assert paper * (1 - 1e-9) <= cyc.dt[k + 1] <= 2 * cyc.dt[k] * (1 + 1e-6)
+
+
+def test_the_option_says_where_its_validation_found_it_changes_the_answer(tmp_path, capsys):
+    """The box and the triaxial test say what the option's validation found (the box: not for the resilient
+    deflection; the triaxial: its first cycle differs) when a run with it starts, and nothing without it."""
+    from ballast.experiments.box import BoxTest
+    from ballast.experiments.triaxial import TriaxialTest
+    assert BoxTest().warnings() == [] and TriaxialTest().warnings() == []
+    for cls, words in ((BoxTest, 'the resilient deflection came out 14 % larger'),
+                       (TriaxialTest, 'cycle 1 strained 15 % less axially')):
+        exp = cls(quasiStatic=2e-3, results=str(tmp_path), runId=cls.NAME)
+        assert len(exp.warnings()) == 1 and exp.warnings()[0].startswith('quasiStatic 0.002: ')
+        assert words in exp.warnings()[0]
+        exp.openRunDirectory()
+        assert 'warning: quasiStatic 0.002: ' in capsys.readouterr().out

@@ -102,6 +102,13 @@ class Experiment:
             self.dir.create()
             self.markRunning()
             self.say('run %s -> %s' % (self.runId, self.out))
+            for w in self.warnings():
+                self.say('warning: ' + w)
+
+    def warnings(self):
+        """What a run should know of its parameters (an option that changes the answer where it was validated), said
+        when it starts and kept in summary.json: none here; an experiment adds its own."""
+        return []
 
     def run(self):
         """The whole experiment: prepare(), then load() (each experiment's own); returns the summary."""

@@ -100,7 +100,7 @@ def summary(exp):
         # the steps the cycles took (their median, as cpuSecondsPerCycle), not the period over the last step
         'stepsPerCycle': (float(np.nanmedian(cyc.stepsPerCycle)) if n and cyc.stepsPerCycle.notna().any()
                           else rec.period / O.dt), **cyclic.jumpSummary(cyc, exp.jumper),
-        'warnings': list(exp.warnings),
+        'warnings': exp.warnings() + list(exp.rangeWarnings),   # its parameters', then where the run went
         **({'stoppedBy': 'sleeperOnFloor'} if exp.onFloor else {}),
         # cut short on the floor: the whole cycles before it; settlement and counts are those at the stop
         **({'cycles': int(rec.partial) - 1, 'stoppedInCycle': int(rec.partial)} if rec.partial else {})}

@@ -109,8 +109,6 @@ class Oedometer(Cyclic, Experiment):
     def prepare(self):
         """The packing (built, or loaded from the store), settled in the cylinder."""
         self.openRunDirectory()
-        for w in self.warnings():
-            self.say('warning: ' + w)
         self.adopt()
         self.rig = self.packing.prepare(self)
         self.adopt()

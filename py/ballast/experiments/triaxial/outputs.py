@@ -64,7 +64,7 @@ def summary(exp):
     def last(column):
         return float(cyc[column].iloc[-1]) if n else 0.0
     return {
-        'experiment': exp.NAME, 'runId': exp.runId, 'params': dict(p), 'cycles': n,
+        'experiment': exp.NAME, 'runId': exp.runId, 'params': dict(p), 'warnings': exp.warnings(), 'cycles': n,
         'axialStrain': last('axialStrain'), 'volumetricStrain': last('volumetricStrain'),
         'resilientStrain': last('resilientStrain'), 'resilientModulus': last('resilientModulus'),
         'settlement': last('settlement'), 'resilient': last('resilient'),
@@ -170,7 +170,7 @@ def monotonicSummary(exp):
     wall, cpu = exp.seconds()
     rows = c['rows']
     return {
-        'experiment': exp.NAME, 'runId': exp.runId, 'params': dict(p), 'test': 'monotonic',
+        'experiment': exp.NAME, 'runId': exp.runId, 'params': dict(p), 'warnings': exp.warnings(), 'test': 'monotonic',
         **(monotonic.peak(rows) if rows else {}), 'rows': len(rows),
         'inertialMax': float(np.nanmax([row[8] for row in rows])) if rows else math.nan,
         'nCrushed': int(sum(e.nCrushed for e in engines() if isinstance(e, BallastCrushEngine))),
