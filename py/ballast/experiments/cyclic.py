@@ -139,6 +139,14 @@ class Cyclic:
 
     SAVER = SAVER   # the checkpoint callback's label (an experiment's older states may name it otherwise)
     jumper = None   # the CycleJumper piece of a run with cycle jumping (startJumping)
+    QUASI_STATIC_FINDING = None   # what the quasi-static option's validation on the experiment found, said by warnings
+
+    def warnings(self):
+        """With quasiStatic: what its validation on this experiment found (QUASI_STATIC_FINDING; docs/performance.md,
+        "Is a cycle quasi-static?"), said when a run with it starts and kept in summary.json."""
+        if self.QUASI_STATIC_FINDING is None or not self.p['quasiStatic'] > 0:
+            return []
+        return ['quasiStatic %g: %s' % (self.p['quasiStatic'], self.QUASI_STATIC_FINDING)]
 
     def startCycles(self, t0, period):
         """At the start of cycling (loading time t0 [s], cycles of `period` [s]): the checkpoints, then cycle
