@@ -180,10 +180,9 @@ class ClumpKind(GrainKind):
         return self._owners[1]
 
     def bounds(self, ids):
-        """(lo, hi), each (n, 3) [m]: the box a grain's spheres fill. A clump reaches where its members do, not to
-        its centre -+ r_eq: the default clump lying flat stands 0.63 of its equivalent diameter, so a plate seated at
-        its centre + r_eq hung 7.6 mm over a bed of them and struck it (seed 1's oedometer, 100 crushes in its first
-        millimetres). A free sphere: its centre -+ its radius. Centres from YADE's C++ reader, no loop over members."""
+        """(lo, hi), each (n, 3) [m]: the box a grain's spheres fill, a clump's members' (not its centre -+ r_eq:
+        lying flat it stands lower, and a plate seated there fell onto the bed, docs/grains.md "Seating"), a free
+        sphere's centre -+ its radius. Centres from YADE's C++ reader, no loop over the members."""
         ids = np.asarray(ids, dtype=np.int64)
         own, _, members, clumps, _, row, _, _, radii = self._scene()
         from ..harvest import bodyPositions   # here: harvest reads the grain kinds
