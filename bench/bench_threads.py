@@ -90,7 +90,8 @@ def main(argv=None):
     def perStep(rs, key):
         return statistics.median(r[key] / r['steps'] for r in rs)
     base = perStep(runs[a.threads[0]], 'wall')
-    out = {'experiment': a.experiment, 'state': os.path.relpath(a.state), 'cycles': a.cycles, 'repeat': a.repeat, 'threads': {}}
+    out = {'experiment': a.experiment, 'state': os.path.relpath(a.state), 'cycles': a.cycles, 'repeat': a.repeat,
+           'threads': {}}
     for n, rs in runs.items():
         wall = perStep(rs, 'wall')
         out['threads'][str(n)] = {

@@ -12,7 +12,8 @@ The interface (:class:`GrainKind`) answers, for the grains of the current scene:
   excluded body is excluded by its kind, never by a group mask;
 * their geometry and inertia, as arrays over ids: centres [m], volumes [m^3], masses [kg], principal
   inertia [kg m^2], the equivalent radius r_eq [m] (of the sphere of the same volume), Young's moduli
-  [Pa], the box each grain fills (:meth:`~GrainKind.bounds`: where a plate or a sleeper seats on it); what goes to a grading (sieve diameters, 2 r_eq [m]) and to VTK (a radius [m]);
+  [Pa], the box each grain fills (:meth:`~GrainKind.bounds`: where a plate or a sleeper seats on it); what goes
+  to a grading (sieve diameters, 2 r_eq [m]) and to VTK (a radius [m]);
 * the stress of a grain (the Love-Weber fabric stress, eq. 3), as one array by body id read in C++,
   and a cheap C++ signature that changes whenever a grain is added, erased or resized (ballast.harvest
   caches on it);

@@ -45,10 +45,10 @@ class BoxTest(Cyclic, Experiment):
     parameter of :data:`ballast.experiments.box.parameters.PARAMS`, or parameters=check(...)."""
 
     NAME = 'box'
-    QUASI_STATIC_FINDING = ('validated on the default box at 3 Hz for the permanent settlement (within the seed scatter '
-                            'of the paper\'s step through cycle 5, 5 seeds, no grain crushed); the resilient deflection '
-                            'came out 14 % larger on average (10-29 % in 4 of 5 pairs) and the tilt larger too: not for '
-                            'the resilient deflection')
+    QUASI_STATIC_FINDING = ('validated on the default box at 3 Hz for the permanent settlement (within the seed '
+                            'scatter of the paper\'s step through cycle 5, 5 seeds, no grain crushed); the resilient '
+                            'deflection came out 14 % larger on average (10-29 % in 4 of 5 pairs) and the tilt larger '
+                            'too: not for the resilient deflection')
     Parameters = BoxParameters
     SAVER = 'boxSaver'   # the checkpoint callback's label in the states box tests have saved (records go on from them)
     # where and how it reports, and how its cycles are simulated (cycle jumping)

@@ -44,10 +44,10 @@ class TriaxialTest(Cyclic, Experiment):
     :data:`ballast.experiments.triaxial.parameters.PARAMS`, or parameters=check(...)."""
 
     NAME = 'triaxial'
-    QUASI_STATIC_FINDING = ('its first cycle runs at 4 times the paper\'s step before it has measured anything: over 5 '
-                            'seeds (p\' 60 kPa, q 45-230 kPa, 5 Hz) cycle 1 strained 15 % less axially, dilated 32 % '
-                            'less and was 9 % stiffer than at the paper\'s step; from cycle 2 the axial strain, by cycle '
-                            '10 the volumetric, lay within the seed scatter')
+    QUASI_STATIC_FINDING = ('its first cycle runs at 4 times the paper\'s step before it has measured anything: over '
+                            '5 seeds (p\' 60 kPa, q 45-230 kPa, 5 Hz) cycle 1 strained 15 % less axially, dilated 32 '
+                            '% less and was 9 % stiffer than at the paper\'s step; from cycle 2 the axial strain, by '
+                            'cycle 10 the volumetric, lay within the seed scatter')
     Parameters = TriaxialParameters
     REOPEN_PARAMS = ('results', 'runId', 'progress', 'vtk', 'cycles', 'saveEvery', 'specimenDir', 'continueFrom',
                      'failureStrain') + tuple(CYCLE_JUMP)
