@@ -52,20 +52,15 @@ def splits(create=False):
     return s
 
 
-def hullVolume(vertices):
-    """Volume [m^3] of the convex hull of vertices ((n, 3) [m]), CGAL's through YADE's Polyhedra."""
-    return Polyhedra(v=[Vector3(*v) for v in np.asarray(vertices, dtype=float).tolist()]).GetVolume()
-
-
 def randomVertices(rEq, seed, n=VERTICES):
     """(n, 3) vertices [m] about the origin whose convex hull has the volume 4/3 pi rEq^3: n points uniform on a unit
-    sphere (a normalised Gaussian triple each, from the seed), scaled by the hull's volume from SciPy's
-    Qhull. A roundish grain with n vertices: the choice
-    of this comparison, not a measured ballast shape."""
+    sphere (a normalised Gaussian triple each, from the seed), scaled by the hull's volume from SciPy's Qhull. A
+    roundish grain with n vertices: the choice of this comparison, not a measured ballast shape."""
     if not rEq > 0:
         raise ValueError('rEq: expected a radius > 0 [m], got %r' % (rEq,))
-    from scipy.spatial import ConvexHull   # Qhull: the same bits every call; CGAL's volume (hullVolume) moved in the
-    g = np.random.default_rng(seed).normal(size=(n, 3))   # last digit between calls, so one seed gave two grains
+    # Qhull gives the same bits every call; CGAL's hull volume moved in the last digit, so one seed gave two grains
+    from scipy.spatial import ConvexHull
+    g = np.random.default_rng(seed).normal(size=(n, 3))
     v = g / np.linalg.norm(g, axis=1)[:, None]
     return v * (4 / 3 * math.pi * rEq ** 3 / ConvexHull(v).volume) ** (1 / 3)
 
