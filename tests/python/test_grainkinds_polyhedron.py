@@ -14,6 +14,7 @@ from yade.wrapper import PyRunner
 from ballast import grainkinds
 from ballast.engines import PolyhedronCrushEngine
 from ballast.experiments.scene import polyhedronEngines, polyhedronMaterials
+from ballast.geometry import equivalentRadius
 from ballast.grainkinds import polyhedron
 from ballast.params import ParamError
 
@@ -72,14 +73,14 @@ def test_random_grain_has_the_volume_of_its_equivalent_sphere():
     assert polyhedron.randomVertices(0.015, [1, 2]) == pytest.approx(v, abs=0)   # the seed gives the grain
 
 
-def _pressed(ft0, speed=0.05, a=0.02):
+def _pressed(ft0, speed=0.05, a=0.02, adjustDt=False):
     """A cube of side a between a fixed bottom facet and a top one closing at speed, the crushing engine and YADE's
     splitter after Newton, and the top facet's force and the contacts' levers recorded every step before them."""
     ballast, steel = _scene()
     cid = _cube(a, ballast)
     bottom, top = _facet(-a / 2, 0.05, steel, True), _facet(a / 2, 0.05, steel, False)
     O.bodies[top].state.vel = (0, 0, -speed)
-    crush = PolyhedronCrushEngine(ft0=ft0, iterPeriod=1, adjustDt=False, label='crush')
+    crush = PolyhedronCrushEngine(ft0=ft0, iterPeriod=1, adjustDt=adjustDt, label='crush')
     seen = []
 
     def record():   # (iter, the mean force on the facets [N], sigma_zz V by hand [N m]: -f (z_c - z) on the cube)
@@ -130,6 +131,22 @@ def test_cube_between_facets_crushes_at_the_closed_form_force_and_keeps_its_mass
     assert kind.signature()[1] == 1
 
 
+def test_a_split_shrinks_the_step_as_eq5_says_for_the_smallest_piece():
+    """The kind's step is r_eq sqrt(rho / (Y r_eq)) of the smallest grain, so after a split O.dt scales by
+    sqrt(r_eq of the smallest piece / r_eq of the cube). (Until 2026-12-05 the step was read after the splitter had cut
+    the grain, so it never shrank, and the oedometer's pieces flew out of the cylinder.)"""
+    a = 0.02
+    _, crush, _ = _pressed(3e5, a=a, adjustDt=True)
+    dt0 = O.dt
+    while crush.nCrushed == 0 and O.iter < 5000:
+        O.step()
+    assert crush.nCrushed == 1
+    rEq = (3 * a ** 3 / (4 * math.pi)) ** (1 / 3)
+    rPiece = float(np.min(equivalentRadius(grainkinds.current().volumes(crush.events[0]['newIds']))))
+    assert rPiece < 0.7 * rEq   # a quarter of the cube, about
+    assert O.dt == pytest.approx(dt0 * math.sqrt(rPiece / rEq), rel=1e-9)
+
+
 def test_rMin_stops_pieces_below_it_from_splitting_again():
     a = 0.02
     rEq = (3 * a ** 3 / (4 * math.pi)) ** (1 / 3)
@@ -178,7 +195,8 @@ def test_single_particle_test_crushes_a_polyhedron_and_its_pieces_keep_the_mass(
     ('single_particle', {'grain': 'polyhedron', 'weibullModulus': 3}, 'weibullModulus'),
     ('single_particle', {'grain': 'polyhedron', 'm': 0.5}, 'm'),
     ('single_particle', {'grain': 'polyhedron', 'criterion': 'majorPrincipal'}, 'criterion'),
-    ('oedometer', {'grain': 'polyhedron', 'abrasion': False}, 'grain'),   # built, refused until its load holds
+    ('oedometer', {'grain': 'polyhedron'}, 'abrasion'),   # abrasion on by default: eq. 7 is for spheres
+    ('oedometer', {'grain': 'polyhedron', 'abrasion': False, 'loadMode': 'servo'}, 'loadMode'),
     ('box', {'grain': 'polyhedron'}, 'grain'),
     ('triaxial', {'grain': 'polyhedron'}, 'grain'),
 ])
@@ -195,3 +213,4 @@ def test_taken_where_offered():
     from ballast.experiments import declaration
     p = declaration('single_particle').check({'grain': 'polyhedron'})
     assert p['grain'] == 'polyhedron'
+    assert declaration('oedometer').check({'grain': 'polyhedron', 'abrasion': False})['grain'] == 'polyhedron'

@@ -81,7 +81,8 @@ class PolyhedronCrushEngine(BallastCrushEngine):
             if getattr(self, k) != v:
                 raise ParamError(k, 'PolyhedronCrushEngine: %s = %r is not YADE\'s PolyhedraSplitter rule (von Mises '
                                     'stress against ft0 / r_eq); only %r' % (k, getattr(self, k), v))
-        self.__dict__['_pending'] = None   # (body count, {grain: (value, strength, pos, r_eq, volume, mass)}) when woken
+        # when woken: (body count, {grain: (value, strength, pos, r_eq, volume, mass)}, eq. 5's step before the split)
+        self.__dict__['_pending'] = None
 
     def engines(self):
         """[this engine, YADE's splitter, the bookkeeping callback]: what goes into O.engines after Newton."""
@@ -119,7 +120,8 @@ class PolyhedronCrushEngine(BallastCrushEngine):
                     b = O.bodies[int(ids[k])]
                     due[int(ids[k])] = (float(se[k]), float(ft[k]), tuple(b.state.pos), float(r[k]), float(V[k]),
                                         b.state.mass)
-                d['_pending'] = (n, due)
+                # eq. 5's step of the grains as they are, before the splitter cuts them (booked() scales O.dt by it)
+                d['_pending'] = (n, due, self._dtBefore())
                 self._splitter().dead = False
         d['nChecks'] += 1
         d['checkSeconds'] += time.perf_counter() - t0
@@ -129,7 +131,7 @@ class PolyhedronCrushEngine(BallastCrushEngine):
         d = self.__dict__
         if d['_pending'] is None:
             return
-        n0, due = d['_pending']
+        n0, due, pw0 = d['_pending']
         d['_pending'] = None
         self._splitter().dead = True
         new = list(range(n0, len(O.bodies)))
@@ -141,7 +143,6 @@ class PolyhedronCrushEngine(BallastCrushEngine):
         if len(new) != 3 * len(parents):   # YADE split a grain at the edge of its rule that this check did not see
             raise RuntimeError('PolyhedronCrushEngine: the splitter made %d bodies for %d grains over their strength '
                                '(three each expected)' % (len(new), len(parents)))
-        pw0 = self._dtBefore()
         store = polyhedron.splits(create=True)
         for j, pid in enumerate(parents):
             se, ft, pos, r, V, M = due[pid]

@@ -256,7 +256,6 @@ class ExperimentParameters(Parameters):
     # grain 'polyhedron' (docs/grains.md, "Polyhedra"): which experiments take it, and the options YADE's polyhedra and
     # their PolyhedraSplitter have no counterpart for, with the one value each may take
     POLYHEDRA = False   # an experiment that takes grain 'polyhedron' says so
-    # why an experiment refuses it, when not for the cost alone
     POLYHEDRA_REFUSED = "YADE's polyhedra cost %s (docs/grains.md, \"Polyhedra\")" % POLYHEDRON_COST
     POLYHEDRON_ONLY = (
         ('m', 1.0, "PolyhedraSplitter's size law is ft0 / r_eq"),
@@ -280,8 +279,8 @@ class ExperimentParameters(Parameters):
         experiment takes it, without the options YADE's polyhedra have no counterpart for."""
         if self['grain'] == 'polyhedron':
             if not self.POLYHEDRA:
-                self.bad('grain', 'polyhedra are offered in the single-particle test only: %s; use sphere or clump'
-                         % self.POLYHEDRA_REFUSED)
+                self.bad('grain', 'polyhedra are offered in the single-particle test and the oedometer only: %s; use '
+                                  'sphere or clump' % self.POLYHEDRA_REFUSED)
             for k, allowed, why in self.POLYHEDRON_ONLY:
                 if k in self.PARAMS and self[k] != allowed:
                     self.bad(k, "with grain = 'polyhedron' only %r: %s" % (allowed, why))

@@ -33,7 +33,7 @@ from ... import runtime
 from ...names import fmtTime
 from ...params import validate
 from ...runfiles import writeAtomic
-from ..parameters import CYCLE_JUMP
+from ..parameters import CYCLE_JUMP, POLYHEDRON_COST
 from .. import chain, grains
 from ...settlementlaws import bedChanged
 from ..base import Experiment
@@ -101,10 +101,14 @@ class Oedometer(Cyclic, Experiment):
         """What the run should know of its parameters, said when it starts and kept in summary.json: density scaling
         (quasiStatic or densityStep) changes whether this oedometer avalanches (docs/performance.md)."""
         p = self.p
-        return ['%s %g: density scaling changes whether the oedometer avalanches (seed 2 at 8 Hz with Fmin 150 kN: 212 '
+        said = ['%s %g: density scaling changes whether the oedometer avalanches (seed 2 at 8 Hz with Fmin 150 kN: 212 '
                 'grains crushed in cycle 1 under quasiStatic 1e-3, 1 at the paper\'s step; over 20 seeds it moved the '
                 'share of avalanching runs by 10-25 points: docs/performance.md); for studies of means that accept it, '
                 'not for reproducing a realization' % (k, p[k]) for k in ('quasiStatic', 'densityStep') if p[k] > 0]
+        if p['grain'] == 'polyhedron':
+            said.append("grain 'polyhedron': YADE's polyhedra cost %s; for small samples (docs/grains.md)"
+                        % POLYHEDRON_COST)
+        return said
 
     def prepare(self):
         """The packing (built, or loaded from the store), settled in the cylinder."""
@@ -217,9 +221,18 @@ class Oedometer(Cyclic, Experiment):
             self.checkContainment()
         s = self.finishRun(self.writeOutputs)
         self.say('done in %s: peak F %.0f kN at delta %.2f mm, delta max %.2f mm, %d crushed, %d abraded, %d '
-                 'steps; results in %s' % (fmtTime(s['wallSeconds']), s['peakForce'] / 1e3, s['deltaAtPeak'] * 1e3,
-                                           s['deltaMax'] * 1e3, s['nCrushed'], s['nAbraded'], s['steps'], self.out))
+                 'steps; results in %s%s' % (fmtTime(s['wallSeconds']), s['peakForce'] / 1e3, s['deltaAtPeak'] * 1e3,
+                                             s['deltaMax'] * 1e3, s['nCrushed'], s['nAbraded'], s['steps'], self.out,
+                                             ''.join('; ' + w for w in self.containmentWarnings())))
         return s
+
+    def containmentWarnings(self):
+        """What makes the run no oedometer, found while it ran (kept in summary.json's warnings): grains whose centre
+        left the cylinder."""
+        if self.nEscaped == 0:
+            return []
+        return ['%d grain(s) left the cylinder (their centres past its wall, the bottom or the plate): the forces and '
+                'deltas are not an oedometer\'s' % self.nEscaped]
 
     def writeOutputs(self):
         """Every output file (outputs.finish) and timing.txt; returns the summary."""

@@ -112,9 +112,7 @@ class OedometerParameters(ExperimentParameters):
     """The oedometer's checked parameters (frozen) and what follows from them."""
 
     OWNER, PARAMS = OWNER, PARAMS
-    # grain 'polyhedron': built (polyhedronsample, the wall plate) but refused until it holds eq. 8's load
-    POLYHEDRA_REFUSED = ("the oedometer's polyhedra are not yet right: the first test run (11 grains, Fmax 50 kN) "
-                         'carried 244 kN on its plate at the peak (docs/grains.md, "Polyhedra")')
+    POLYHEDRA = True   # grain 'polyhedron' too (polyhedronsample, the wall plate; docs/grains.md, "Polyhedra")
 
     @property
     def T(self):

@@ -28,7 +28,7 @@ def summary(exp):
     cycles = float(a[-1, 0] / exp.T) + exp.cyclesJumped()
     s = {
         'runId': exp.runId,
-        'warnings': exp.warnings(),
+        'warnings': exp.warnings() + exp.containmentWarnings(),
         'peakForce': float(a[k, 1]),  # = peakGrainForce (the name older records have)
         'peakGrainForce': float(a[k, 1]),
         'peakAppliedForce': float(np.nanmax(a[:, 5])) if np.isfinite(a[:, 5]).any() else None,
