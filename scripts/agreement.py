@@ -7,7 +7,12 @@ equivalence within the seed scatter):
         --quantities settlement resilient tilt --at 1 2 5 --out docs/studies/qs-box-scaled
 
 writes agreement-pairs.csv (per quantity, cycle and seed both values and their difference) and agreement.json
-(per quantity and cycle the test and its verdict), and prints the verdicts."""
+(per quantity and cycle the test and its verdict), and prints the verdicts. One study whose table holds both the
+option's rows and the reference's is split by a parameter's values:
+
+    scripts/agreement.py 'docs/studies/qs-box-crush[quasiStatic=1e-3]' \
+        --reference 'docs/studies/qs-box-crush[quasiStatic=0]' --quantities settlement crushes --at 1 \
+        --out docs/studies/qs-box-crush"""
 import argparse
 import json
 import os
@@ -31,8 +36,10 @@ def alphaLevel(text):
 
 def main(argv=None):
     ap = argparse.ArgumentParser(prog='scripts/agreement.py', description=__doc__.split('\n\n')[0])
-    ap.add_argument('study', help='the study (or its records) run with the option')
-    ap.add_argument('--reference', required=True, help='the study (or its records) run without it, on the same seeds')
+    ap.add_argument('study', help='the study (or its records) run with the option; PATH[NAME=VALUE ...]: its runs '
+                                  'with those parameter values')
+    ap.add_argument('--reference', required=True, help='the study (or its records) run without it, on the same '
+                                                       'seeds; PATH[NAME=VALUE ...] as for study')
     ap.add_argument('--quantities', nargs='+', default=['settlement', 'resilient'], metavar='COLUMN',
                     help='columns of cycles.csv compared (default: settlement resilient)')
     ap.add_argument('--at', type=cycleNumber, nargs='+', default=[1, 2, 5], metavar='N', help='cycles (default: 1 2 5)')
@@ -40,8 +47,12 @@ def main(argv=None):
     ap.add_argument('--out', required=True, help='where agreement-pairs.csv and agreement.json go')
     a = ap.parse_args(argv)
     try:
-        frame = agreement.values([a.study, a.reference], a.quantities, a.at)
-        pairs, verdicts = agreement.compare(frame, a.study, a.reference, a.quantities, a.at, a.alpha)
+        (path, study, by), (refPath, reference, refBy) = (agreement.selection(x) for x in (a.study, a.reference))
+        if by != refBy:
+            raise ValueError('agreement: %s and %s select runs by different parameters (%s; %s): name the same '
+                             'ones, or none' % (a.study, a.reference, ' '.join(by) or 'none', ' '.join(refBy) or 'none'))
+        frame = agreement.values(list(dict.fromkeys([path, refPath])), a.quantities, a.at, by)
+        pairs, verdicts = agreement.compare(frame, study, reference, a.quantities, a.at, a.alpha)
     except (StudyError, ValueError) as e:
         print('agreement.py: %s' % e, file=sys.stderr)
         return 2

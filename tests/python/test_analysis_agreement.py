@@ -16,14 +16,15 @@ SCRIPT = os.path.join(HERE, '..', '..', 'scripts', 'agreement.py')
 
 
 def study(root, runs, extra='tilt'):
-    """Records with one run per {runId: (seed, [(settlement, tilt) per cycle], continueFrom runId or None)}."""
+    """Records with one run per {runId: (seed, [(settlement, tilt) per cycle], continueFrom runId or None[, other
+    parameters])}."""
     rows = []
-    for k, (rid, (seed, values, fromRun)) in enumerate(runs.items()):
+    for k, (rid, (seed, values, fromRun, *more)) in enumerate(runs.items()):
         d = os.path.join(root, 'runs', rid)
         os.makedirs(d)
         cont = '/x/runs/%s/state-end.yade.gz' % fromRun if fromRun else ''
         with open(os.path.join(d, 'summary.json'), 'w') as fh:
-            json.dump({'params': {'seed': seed, 'continueFrom': cont}}, fh)
+            json.dump({'params': dict({'seed': seed, 'continueFrom': cont}, **(more[0] if more else {}))}, fh)
         with open(os.path.join(d, 'cycles.csv'), 'w') as fh:
             fh.write('cycle,settlement,resilient,%s\n' % extra
                      + ''.join('%d,%r,1e-6,%r\n' % (n + 1, s, t) for n, (s, t) in enumerate(values)))
@@ -102,3 +103,27 @@ def test_script_writes_its_files_and_refuses_bad_input(tmp_path):
     r = subprocess.run([sys.executable, SCRIPT, opt, '--reference', ref, '--quantities', 'work', '--out', str(out)],
                        capture_output=True, text=True, env=env)
     assert r.returncode == 2 and 'wrote no work in cycles.csv' in r.stderr
+
+
+def test_one_study_split_by_a_parameter(tmp_path):
+    """A table holding the option's rows and the reference's: PATH[NAME=VALUE] selects each (a number as written in a
+    table, 1e-3, or as %g, 0.001); both sides must select by the same parameters."""
+    both = study(tmp_path / 'both', {'true1': (1, [(1.0, 0.0)], None, {'quasiStatic': 0.0}),
+                                     'true2': (2, [(2.0, 0.0)], None, {'quasiStatic': 0.0}),
+                                     'qs1': (1, [(1.1, 0.0)], None, {'quasiStatic': 0.001}),
+                                     'qs2': (2, [(2.3, 0.0)], None, {'quasiStatic': 0.001})})
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join(sys.path))
+    out = tmp_path / 'out'
+    r = subprocess.run([sys.executable, SCRIPT, both + '[quasiStatic=1e-3]', '--reference', both + '[quasiStatic=0]',
+                        '--quantities', 'settlement', '--at', '1', '--out', str(out)], capture_output=True, text=True,
+                       env=env)
+    assert r.returncode == 0, r.stderr
+    v = json.load(open(out / 'agreement.json'))['verdicts'][0]
+    assert v['seeds'] == 2 and v['meanDifference'] == pytest.approx((0.1 + 0.3) / 2, abs=1e-12)
+    assert agreement.selection(both + '[quasiStatic=0.001]')[1] == agreement.selection(both + '[quasiStatic=1e-3]')[1]
+    for bad, word in (([both + '[quasiStatic=1e-3]', '--reference', both], 'different parameters'),
+                      ([both + '[quasiStatic]', '--reference', both + '[quasiStatic=0]'], 'PATH[NAME=VALUE ...]'),
+                      ([both + '[quasiStatic=0.01]', '--reference', both + '[quasiStatic=0]'], 'no run of')):
+        r = subprocess.run([sys.executable, SCRIPT] + bad + ['--at', '1', '--out', str(out)], capture_output=True,
+                           text=True, env=env)
+        assert r.returncode == 2 and word in r.stderr, r.stderr

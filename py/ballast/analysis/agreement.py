@@ -13,6 +13,7 @@ Per quantity and cycle N, over the seeds both reached, with d_s = option - refer
 The margin is itself estimated from the seeds (with 5 seeds it is uncertain by about a third); the verdict says
 what these seeds show, not more. NumPy, pandas, scipy; no YADE."""
 import math
+import re
 
 import numpy as np
 import pandas as pd
@@ -24,13 +25,36 @@ from .settlement import realizationRuns, total
 VERDICTS = ('changed', 'within the seed scatter', 'not shown either way')
 
 
-def values(paths, quantities, at):
-    """A DataFrame, a row per realization of the studies at `paths` and cycle of `at` it reached: study, runId,
-    seed, cycle and each of `quantities` from its cycles.csv (a realization run in slices read from its last
-    slice; settlement with the jumped cycles' share when cycle jumping ran). ValueError naming a quantity no run
-    has."""
+def selection(text):
+    """A study's runs as the command line names them: 'PATH', or 'PATH[NAME=VALUE ...]' for its runs with those
+    parameter values (a study whose table holds both the option's rows and the reference's). Returns (path, the
+    label values() gives those runs: settlement.variantLabel's spelling, a number as %g: 1e-3 is 0.001), the
+    names. ValueError for a selection that is not NAME=VALUE pairs."""
+    m = re.fullmatch(r'(.+)\[(.*)\]', text)
+    if m is None:
+        return text, text, ()
+    path, pairs = m.group(1), m.group(2).split()
+    if not pairs or not all(re.fullmatch(r'[A-Za-z_]\w*=\S+', x) for x in pairs):
+        raise ValueError('agreement: %r: a selection is PATH[NAME=VALUE ...], e.g. docs/studies/qs-box-crush'
+                         '[quasiStatic=1e-3]' % text)
+    chosen = dict(x.split('=', 1) for x in pairs)
+
+    def spelt(v):
+        try:
+            return '%g' % float(v)
+        except ValueError:
+            return v
+    names = tuple(sorted(chosen))
+    return path, '%s[%s]' % (path, ' '.join('%s=%s' % (k, spelt(chosen[k])) for k in names)), names
+
+
+def values(paths, quantities, at, by=()):
+    """A DataFrame, a row per realization of the studies at `paths` and cycle of `at` it reached: study (the path,
+    or with `by` the path and the run's values of those parameters, settlement.variantLabel), runId, seed, cycle and
+    each of `quantities` from its cycles.csv (a realization run in slices read from its last slice; settlement with
+    the jumped cycles' share when cycle jumping ran). ValueError naming a quantity no run has."""
     rows = []
-    for label, run, c in realizationRuns(paths):
+    for label, run, c in realizationRuns(paths, by):
         missing = [q for q in quantities if q != 'settlement' and q not in c]
         if missing:
             raise ValueError('agreement: %s wrote no %s in cycles.csv; it has %s' % (
