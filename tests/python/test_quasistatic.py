@@ -60,15 +60,17 @@ def test_the_step_choice_puts_the_last_cycle_at_its_bounds_grows_at_most_twice_a
     min(0.1 / 1000, 0.1 / 100) = 1e-4 s; the first cycle at 4e-6 s. I ~ dt and ratio ~ 1 / dt, aimed at 0.7 of the
     bounds: I = 2e-4, ratio 100 allow 3.5 and 7 times the step, the growth 2: 8e-6 s; I = 6e-4, ratio 30 allow
     0.7 / 0.6 and 2.1: 8e-6 x 7 / 6; I = 1.2e-3 breaks the bound: the paper's step, the cycle marked; no measure
-    (unloaded): twice the step."""
+    (unloaded): twice the step; the ratio alone broken (8 < 10): marked, and the step shrunk to put it at 10 / 0.7,
+    x 0.56; so far below (ratio 1) that the paper's step is the floor."""
     c = quasistatic.StepChoice(1e-6, 1e-3, 10.0, 0.1, 100)
     assert c.largest == pytest.approx(1e-4) and c.step == pytest.approx(4e-6)
     assert c.cycleClosed(2e-4, 100.0) == pytest.approx(8e-6)
     assert c.cycleClosed(6e-4, 30.0) == pytest.approx(8e-6 * 0.7 / 0.6)
     assert c.cycleClosed(1.2e-3, 30.0) == pytest.approx(1e-6)
     assert c.cycleClosed(float('nan'), float('nan')) == pytest.approx(2e-6)
-    assert c.cycleClosed(5e-4, 8.0) == pytest.approx(1e-6)   # the ratio below 10: broken too
-    assert c.met == [1, 1, 0, 1, 0]
+    assert c.cycleClosed(5e-4, 8.0) == pytest.approx(2e-6 * 0.7 * 8.0 / 10.0)   # the ratio below 10: broken too
+    assert c.cycleClosed(5e-4, 1.0) == pytest.approx(1e-6)
+    assert c.met == [1, 1, 0, 1, 0, 0]
     for _ in range(20):
         c.cycleClosed(1e-9, 1e9)   # far inside the bounds: the growth, then the cap
     assert c.step == pytest.approx(1e-4)
@@ -80,7 +82,8 @@ def test_the_step_choice_puts_the_last_cycle_at_its_bounds_grows_at_most_twice_a
 def test_a_small_box_under_the_quasi_static_option_keeps_the_bound_or_says_so(tmp_path):
     """The small soft box at 10 Hz (I about 5e-4 at the paper's step) with quasiStatic 1e-3: the first cycle at 4
     times the paper's step, then each cycle's step the option's; cycles.csv says which cycles kept the bounds,
-    those that did not were followed by a cycle at the paper's step, and each kept cycle had I <= 1e-3."""
+    those that broke the inertial bound were followed by a cycle at the paper's step, those that broke only the
+    ratio bound by a shorter step, and each kept cycle had I <= 1e-3."""
     import pandas as pd
     from ballast.experiments.box import BoxTest
     small = dict(boxLength=0.3, boxWidth=0.12, bedDepth=0.1, layers=2, sleeperWidth=0.1, sleeperHeight=0.05,
@@ -98,8 +101,10 @@ def test_a_small_box_under_the_quasi_static_option_keeps_the_bound_or_says_so(tm
     assert ((cyc.inertialMax[kept] <= 1e-3) & ~(cyc.responseRatio[kept] < 10)).all()
     assert ((cyc.inertialMax[~kept] > 1e-3) | (cyc.responseRatio[~kept] < 10)).all()
     for k in range(len(cyc) - 1):   # the step of cycle k + 1 is the choice made at cycle k's end
-        if cyc.quasiStaticMet[k] == 0:
+        if cyc.inertialMax[k] > 1e-3:
             assert cyc.dt[k + 1] == pytest.approx(paper, rel=1e-6)
+        elif cyc.quasiStaticMet[k] == 0:
+            assert paper * (1 - 1e-9) <= cyc.dt[k + 1] < cyc.dt[k]
         else:
             assert paper * (1 - 1e-9) <= cyc.dt[k + 1] <= 2 * cyc.dt[k] * (1 + 1e-6)
 

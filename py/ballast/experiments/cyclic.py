@@ -186,15 +186,16 @@ class Cyclic:
 
     def chooseStep(self, cycle, inertialMax, responseRatio):
         """quasiStatic: the next cycle's density step from this one's measures (quasistatic.StepChoice); a cycle that
-        broke a bound says so, and the next runs at the paper's step."""
+        broke a bound says so, and which step the next one runs at (the paper's after the inertial bound)."""
         choice, before = self.stepChoice, self.stepChoice.step
         step = choice.cycleClosed(inertialMax, responseRatio)
         if not choice.met[-1]:
             ratio = ('%.3g' % responseRatio if math.isfinite(responseRatio)
                      else 'not measured: no resilient deformation this cycle')
             self.say('cycle %d broke the quasi-static bounds (largest inertial number %.3g, bound %g; response ratio '
-                     '%s, at least %g): the next cycle at the paper\'s step %.3g s' % (
-                         cycle, inertialMax, choice.bound, ratio, choice.ratioMin, step))
+                     '%s, at least %g): the next cycle at %s %.3g s' % (
+                         cycle, inertialMax, choice.bound, ratio, choice.ratioMin,
+                         'the paper\'s step' if step == choice.paper else 'the shorter step', step))
         if step != before:
             timestep.changeDensityStep(step, step / self.p['dtSafety'], choice.loaded)
 

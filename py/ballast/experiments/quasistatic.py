@@ -75,9 +75,13 @@ class StepChoice:
     cycle's measures. Density scaling by a step dt makes the grains' inertia grow as dt^2, so the inertial number
     grows as dt and the response ratio falls as 1/dt: the next step is the one that puts the last cycle's largest I
     at SAFETY I_MAX and its ratio at ratioMin / SAFETY, at most GROWTH times the last step, at most a cycle over
-    MIN_STEPS (and abrasionPeriod steps within a cycle), at least the paper's step. A cycle that broke a bound (an
-    avalanche, a grain flying) is marked and the next one runs at the paper's step. The first cycle runs at
-    START_FACTOR times the paper's step: its measures give the second's."""
+    MIN_STEPS (and abrasionPeriod steps within a cycle), at least the paper's step. A cycle that broke a bound is
+    marked; after one that broke the inertial bound (an avalanche, a grain flying: a dynamic event the scaled inertia
+    may have changed) the next runs at the paper's step; after one that broke only the ratio bound the rule above
+    shrinks the step to put the ratio back at ratioMin / SAFETY (the ratio goes as 1 / dt, so the cycle's own
+    measure says how far; on the default box a cycle at the paper's step costs about 40 steady ones, and as many
+    again while the step grows back).
+    The first cycle runs at START_FACTOR times the paper's step: its measures give the second's."""
 
     def __init__(self, paper=0.0, bound=0.0, ratioMin=0.0, period=0.0, abrasionPeriod=1):
         self.paper, self.bound, self.ratioMin, self.period = paper, bound, ratioMin, period
@@ -99,10 +103,9 @@ class StepChoice:
     def cycleClosed(self, inertialMax, ratio):
         """The closed cycle's largest inertial number and response ratio: whether it kept the bounds, and the
         next cycle's step [s]."""
-        broken = (math.isfinite(inertialMax) and inertialMax > self.bound) or (
-            math.isfinite(ratio) and ratio < self.ratioMin)
-        self.met.append(0 if broken else 1)
-        if broken:
+        inertial = math.isfinite(inertialMax) and inertialMax > self.bound
+        self.met.append(0 if inertial or (math.isfinite(ratio) and ratio < self.ratioMin) else 1)
+        if inertial:
             self.step = self.paper
             return self.step
         limits = [GROWTH]
