@@ -28,6 +28,11 @@ MembraneLoad membraneLoad(const MembraneGrid& g, long n, const double* centres, 
 	requireNonNegative("pressure", pressure);
 	const double dth = 2 * M_PI / g.nTheta, dz = (g.z1 - g.z0) / g.nZ;
 	const long   cells = g.nTheta * g.nZ;
+	std::vector<double> cosC(g.nTheta), sinC(g.nTheta);  // each column's ray direction, (k + 1/2) dth, once
+	for (long k = 0; k < g.nTheta; ++k) {
+		cosC[k] = std::cos((k + 0.5) * dth);
+		sinC[k] = std::sin((k + 0.5) * dth);
+	}
 	std::vector<double> hit(cells, -INFINITY);  // the outermost hit of each cell's own ray [m]
 	std::vector<long>   own(cells, -1);
 	for (long i = 0; i < n; ++i) {
@@ -52,7 +57,7 @@ MembraneLoad membraneLoad(const MembraneGrid& g, long n, const double* centres, 
 		}
 		for (long kt = kt0; kt <= kt1; ++kt) {
 			const long   k  = ((kt % g.nTheta) + g.nTheta) % g.nTheta;
-			const double tc = (k + 0.5) * dth, c = std::cos(tc), s = std::sin(tc);
+			const double c = cosC[k], s = sinC[k];
 			const double a = x * c + y * s, b = -x * s + y * c;
 			for (long kz = kz0; kz <= kz1; ++kz) {
 				const double h = g.z0 + (kz + 0.5) * dz - z, disc = r * r - b * b - h * h;
@@ -101,9 +106,9 @@ MembraneLoad membraneLoad(const MembraneGrid& g, long n, const double* centres, 
 				continue;
 			}
 			out.bridged += gap;
-			const double tc = (k + 0.5) * dth, f = pressure * rho * dth * dz;
-			out.force[3 * by] -= f * std::cos(tc);
-			out.force[3 * by + 1] -= f * std::sin(tc);
+			const double f = pressure * rho * dth * dz;
+			out.force[3 * by] -= f * cosC[k];
+			out.force[3 * by + 1] -= f * sinC[k];
 			out.radius[cell] = rho;
 			out.owner[cell]  = by;
 			out.area += rho * dth * dz;
