@@ -50,7 +50,8 @@ def main(argv=None):
         (path, study, by), (refPath, reference, refBy) = (agreement.selection(x) for x in (a.study, a.reference))
         if by != refBy:
             raise ValueError('agreement: %s and %s select runs by different parameters (%s; %s): name the same '
-                             'ones, or none' % (a.study, a.reference, ' '.join(by) or 'none', ' '.join(refBy) or 'none'))
+                             'ones, or none' % (a.study, a.reference, ' '.join(by) or 'none',
+                                                ' '.join(refBy) or 'none'))
         frame = agreement.values(list(dict.fromkeys([path, refPath])), a.quantities, a.at, by)
         pairs, verdicts = agreement.compare(frame, study, reference, a.quantities, a.at, a.alpha)
     except (StudyError, ValueError) as e:
