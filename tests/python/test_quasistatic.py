@@ -115,6 +115,7 @@ def test_the_option_says_where_its_validation_found_it_changes_the_answer(tmp_pa
     from ballast.experiments.box import BoxTest
     from ballast.experiments.triaxial import TriaxialTest
     assert BoxTest().warnings() == [] and TriaxialTest().warnings() == []
+    assert 'not validated for crushing' in BoxTest(quasiStatic=1e-3).warnings()[0]   # the crushing case's finding
     for cls, words in ((BoxTest, 'the resilient deflection came out 14 % larger'),
                        (TriaxialTest, 'cycle 1 strained 15 % less axially')):
         exp = cls(quasiStatic=2e-3, results=str(tmp_path), runId=cls.NAME)
