@@ -68,7 +68,8 @@ def test_the_weak_run_reused_the_stored_packing(runs):
     strong, weak = (runs[k][0] for k in ('strong', 'weak'))
     a, b = (np.loadtxt(os.path.join(e.out, 'grains.csv'), delimiter=',', skiprows=1, ndmin=2) for e in (strong, weak))
     assert _summary(strong)['nGrainsInitial'] == _summary(weak)['nGrainsInitial']
-    assert _summary(strong)['massInitial'] == _summary(weak)['massInitial']   # the same grains, bit for bit
+    # the same grains: their masses are YADE's from the stored vertices (CGAL's volume, to rounding)
+    assert _summary(strong)['massInitial'] == pytest.approx(_summary(weak)['massInitial'], rel=1e-12)
     assert len(b) > len(a)   # and the weak one crushed some
 
 
