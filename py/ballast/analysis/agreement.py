@@ -20,7 +20,7 @@ import pandas as pd
 
 from .effects import meanInterval
 from .pairs import common, oneRunPerSeed
-from .settlement import realizationRuns, total
+from .settlement import realizationRuns, total, variantLabel
 
 VERDICTS = ('changed', 'within the seed scatter', 'not shown either way')
 
@@ -37,15 +37,17 @@ def selection(text):
     if not pairs or not all(re.fullmatch(r'[A-Za-z_]\w*=\S+', x) for x in pairs):
         raise ValueError('agreement: %r: a selection is PATH[NAME=VALUE ...], e.g. docs/studies/qs-box-crush'
                          '[quasiStatic=1e-3]' % text)
-    chosen = dict(x.split('=', 1) for x in pairs)
-
-    def spelt(v):
-        try:
-            return '%g' % float(v)
-        except ValueError:
-            return v
+    chosen = {k: _number(v) for k, v in (x.split('=', 1) for x in pairs)}
     names = tuple(sorted(chosen))
-    return path, '%s[%s]' % (path, ' '.join('%s=%s' % (k, spelt(chosen[k])) for k in names)), names
+    return path, variantLabel(path, chosen, names), names
+
+
+def _number(text):
+    """A selection's value as a run's parameter holds it: a number as a float (variantLabel spells it %g), else text."""
+    try:
+        return float(text)
+    except ValueError:
+        return text
 
 
 def values(paths, quantities, at, by=()):
