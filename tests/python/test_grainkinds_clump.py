@@ -173,3 +173,30 @@ def test_bounds_are_the_members_not_the_equivalent_sphere():
     assert k.tops([flat])[0] == hi[2][2]
     from ballast.experiments import grains
     assert grains.top() == pytest.approx(max(0.3 + R, 0.062, top), abs=1e-15)
+
+
+def test_density_scaling_of_a_clump_follows_its_smallest_member():
+    """Eq. 5's own step of a clump is its members' (YADE's PWaveTimeStep reads them), not r_eq's: density scaling
+    for an own step dt makes r_min sqrt(rho / (E s)) = dt for every clump (r_min its smallest member, rho its mass
+    over its volume) and r sqrt(rho / (E s)) = dt for a free sphere; the density the quasi-static measures use is
+    the mass-weighted mean of those factors. Before, the clumps were scaled from r_eq: a step about twice theirs."""
+    from ballast.densityscaling import scaleDensities, scaledDensity
+    _, ballast = _scene()
+    c1 = clump.addClump((0.0, 0.0, 0.0), 0.02, ballast, seed=1)
+    c2 = clump.addClump((0.1, 0.0, 0.0), 0.03, ballast, seed=2)
+    s = O.bodies.append(utils.sphere((0.2, 0.0, 0.0), 0.01, material=ballast))
+    k, ids, E = grainkinds.current(), [c1, c2, s], ballast.young
+    rMin = np.array([min(O.bodies[m].shape.radius for m in O.bodies[c].shape.members) for c in (c1, c2)] + [0.01])
+    assert k.stepRadii(ids).tolist() == rMin.tolist()
+    assert np.all(rMin[:2] < 0.7 * k.radii(ids)[:2])   # the default shape's members: well below r_eq
+    rho = k.masses(ids) / k.volumes(ids)
+    # YADE's own critical step is the smallest member's, within the clump's mass error (1 %, the first test)
+    assert utils.PWaveTimeStep() == pytest.approx(float(np.min(rMin * np.sqrt(rho / E))), rel=1e-2)
+    own = 3.0 * float(np.max(k.radii(ids) * np.sqrt(rho / E)))   # longer than every grain's own step, r_eq's too
+    scaleDensities(ids, own)
+    factor = np.array([O.bodies[i].state.densityScaling for i in ids])
+    assert np.all(factor < 1)
+    assert rMin * np.sqrt(rho / (E * factor)) == pytest.approx([own] * 3, rel=1e-12)
+    w = k.radii(ids) ** 3
+    assert scaledDensity(k.radii(ids), RHO, E, own, k.stepRadii(ids)) == pytest.approx(
+        RHO * np.sum(w / ((rMin * np.sqrt(RHO / E) / own) ** 2)) / np.sum(w), rel=1e-12)

@@ -27,20 +27,36 @@ def inertialNumber(p, speed, height, force, area, peak, ownStep=None):
     the grains carrying `force` [N] over `area` [m^2]; NaN while they carry less than LOADED of the `peak` load
     [N] (the seating), or without grains. p: the run's parameters (density, young); ownStep [s]: the grains' own
     step under density scaling now (default the parameters')."""
-    radii = harvest.grains().radii
+    table = harvest.grains()
+    radii = table.radii
     if not (force >= LOADED * peak and height > 0 and len(radii)):
         return math.nan
     own = p.scaledPWaveStep() if ownStep is None else ownStep
-    rho = scaledDensity(radii, p['density'], p['young'], own)
+    rho = scaledDensity(radii, p['density'], p['young'], own, _stepRadii(table))
     return float(_ballast.inertialNumber(speed / height, 2 * float(np.mean(radii)), rho, force / area))
 
 
 def bedMass(p, masses, ownStep=None):
     """The grains' mass [kg] as their inertia sees it: their masses [kg] times the density scaling's factor (ownStep
     as in inertialNumber)."""
-    radii = harvest.grains().radii
+    table = harvest.grains()
     own = p.scaledPWaveStep() if ownStep is None else ownStep
-    return float(np.sum(masses)) * scaledDensity(radii, p['density'], p['young'], own) / p['density']
+    return float(np.sum(masses)) * scaledDensity(table.radii, p['density'], p['young'], own,
+                                                 _stepRadii(table)) / p['density']
+
+
+_steps = (None, None)   # (the grain table's signature, its grains' step radii)
+
+
+def _stepRadii(table):
+    """The radii of the grains' own steps (GrainKind.stepRadii) in the table's order: its radii where a grain is one
+    sphere, else the kind's, kept until the table changes."""
+    global _steps
+    if table.kind.oneSphere:
+        return table.radii
+    if _steps[0] != (id(table), table.signature):
+        _steps = ((id(table), table.signature), table.kind.stepRadii(table.ids))
+    return _steps[1]
 
 
 def responseRatio(period, mass, loadRange, resilient):

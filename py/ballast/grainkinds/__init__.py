@@ -123,6 +123,11 @@ class GrainKind:
         """The height of each grain's highest point [m] (bounds)."""
         return self.bounds(ids)[1][:, 2]
 
+    def stepRadii(self, ids):
+        """The radius [m] of each grain's own P-wave step r sqrt(rho / E) (eq. 5), the one density scaling sets: the
+        radius YADE's PWaveTimeStep() reads for it. Default r_eq (a sphere's radius)."""
+        return self.radii(ids)
+
     def pWaveTimeStep(self):
         """Eq. 5's critical step [s] of the scene's grains: YADE's PWaveTimeStep() (spheres, clump members)."""
         return utils.PWaveTimeStep()
