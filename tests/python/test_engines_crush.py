@@ -75,6 +75,15 @@ def test_weibull_strengths_per_grain_reproducible_and_fragments_draw_their_own()
     assert len(set(crush.strengthFactors(e['newIds']).tolist())) == len(e['newIds'])
     assert ballast.weibullFactors(5, [g], 3.0)[0] != w
     assert BallastCrushEngine(ft0=1.0).strengthFactors([g]) is None  # k = 0: the paper's strength
+    # the factors are kept between checks of the same grains, drawn again for other grains, seed or modulus
+    ids = [g] + e['newIds']
+    kept = crush.strengthFactors(ids)
+    assert crush.strengthFactors(list(ids)) is kept and not kept.flags.writeable
+    np.testing.assert_array_equal(crush.strengthFactors(ids[1:]), ballast.weibullFactors(4, ids[1:], 3.0))
+    crush.seed = 5
+    np.testing.assert_array_equal(crush.strengthFactors(ids), ballast.weibullFactors(5, ids, 3.0))
+    crush.weibullModulus = 2.0
+    np.testing.assert_array_equal(crush.strengthFactors(ids), ballast.weibullFactors(5, ids, 2.0))
 
 
 @pytest.mark.parametrize('pattern', [4, 'planar4', 6, 14])

@@ -71,7 +71,17 @@ class BallastCrushEngine(BallastEngine):
         so the same after O.save/O.load and drawn afresh for fragments (new ids); None without scatter."""
         if self.weibullModulus == 0:
             return None
-        return _ballast.weibullFactors(self.seed, np.asarray(ids, dtype=np.int64), self.weibullModulus)
+        ids = np.asarray(ids, dtype=np.int64)
+        # the same grains as the last check's, as at most checks: the same factors (drawing them was a quarter of a
+        # check's own time on the triaxial specimen, bench/bench_checks.py)
+        key = (self.seed, self.weibullModulus, ids.tobytes())
+        last = self.__dict__.get('_weibull')
+        if last is None or last[0] != key:
+            w = _ballast.weibullFactors(self.seed, ids, self.weibullModulus)
+            w.flags.writeable = False   # shared by the checks that follow
+            last = (key, w)
+            self.__dict__['_weibull'] = last
+        return last[1]
 
     def evaluate(self, ids, radii):
         """(the criterion's stress [Pa], the strength f_t [Pa], crush) of the grains `ids` now, without fatigue."""
