@@ -25,6 +25,8 @@ from ballast.params import ParamError
     ({'peakLoad': -1}, 'peakLoad', 'expected a finite number > 0'),
     ({'layers': 0}, 'layers', 'an integer in [1, 20]'),
     ({'saveEvery': -1}, 'saveEvery', 'a finite number >= 0'),
+    ({'quasiStaticStart': 1.0}, 'quasiStaticStart', 'is used only with quasiStatic > 0'),
+    ({'quasiStatic': 1e-3, 'quasiStaticStart': 0.5}, 'quasiStaticStart', 'a number in [1, 16]'),
 ])
 def test_a_bad_value_is_refused_naming_the_parameter(values, name, why):
     with pytest.raises(ParamError, match=r'BoxTest: %s = ' % name) as e:

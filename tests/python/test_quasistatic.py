@@ -77,6 +77,11 @@ def test_the_step_choice_puts_the_last_cycle_at_its_bounds_grows_at_most_twice_a
     c.loaded = {7: 3e-6}
     back = quasistatic.StepChoice.fromState(__import__('json').loads(__import__('json').dumps(c.state())))
     assert back.state() == c.state() and back.loaded == {7: 3e-6}
+    # quasiStaticStart: the first cycle at 1 times the paper's step (the paper's), 16 times capped by the cycle's
+    # 1000 steps (16e-6 s allowed here, 1.6e-5 > 1e-5 for cycles of 0.01 s)
+    assert quasistatic.StepChoice(1e-6, 1e-3, 10.0, 0.1, 100, 1.0).step == 1e-6
+    assert quasistatic.StepChoice(1e-6, 1e-3, 10.0, 0.1, 1, 16.0).step == pytest.approx(1.6e-5)
+    assert quasistatic.StepChoice(1e-6, 1e-3, 10.0, 0.01, 1, 16.0).step == pytest.approx(1e-5)
 
 
 def test_a_small_box_under_the_quasi_static_option_keeps_the_bound_or_says_so(tmp_path):

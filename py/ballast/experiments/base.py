@@ -238,7 +238,7 @@ class Experiment:
         step = p['densityStep']
         if p.get('quasiStatic', 0) > 0:
             self.stepChoice = quasistatic.StepChoice(p.startTimeStep(), p['quasiStatic'], p['quasiStaticRatio'], period,
-                                                     p['abrasionPeriod'])
+                                                     p['abrasionPeriod'], p['quasiStaticStart'])
             self.adopt()
             step = self.stepChoice.step
         if step > 0:

@@ -121,14 +121,18 @@ INTEGRATION = {
 }
 
 # the quasi-static option of the cyclic experiments (experiments.quasistatic, docs/performance.md)
-QS_START_FACTOR = 4.0   # [-] its first cycle's step over the paper's
+QS_START_FACTOR = 4.0   # [-] its first cycle's step over the paper's, by default
 QUASI_STATIC = {
     'quasiStatic': Param(0.0, '-', 'the quasi-static option: density scaling whose step is chosen cycle by cycle so '
                          'that the bed\'s largest inertial number in a cycle stays below this bound and the load\'s '
-                         'period over the bed\'s response time above quasiStaticRatio (the first cycle at %g times the '
-                         'paper\'s step; a cycle that breaks a bound is marked in cycles.csv and the next runs at the '
-                         'paper\'s step; docs/performance.md); 1e-3 is the quasi-static regime (GDR MiDi 2004); '
-                         '0 = off' % QS_START_FACTOR, between(0, 0.1, closedHi=True), 'a number in [0, 0.1]'),
+                         'period over the bed\'s response time above quasiStaticRatio (the first cycle at '
+                         'quasiStaticStart times the paper\'s step; a cycle that breaks a bound is marked in cycles.csv '
+                         'and the next runs at the paper\'s step; docs/performance.md); 1e-3 is the quasi-static regime '
+                         '(GDR MiDi 2004); 0 = off', between(0, 0.1, closedHi=True), 'a number in [0, 0.1]'),
+    'quasiStaticStart': Param(QS_START_FACTOR, '-', 'with quasiStatic: the first cycle\'s step over the paper\'s; 1 runs '
+                              'the first loading, where the bed rearranges most, at the paper\'s step, and the option '
+                              'grows the step from the second cycle on', between(1, 16, closedHi=True),
+                              'a number in [1, 16]'),
     'quasiStaticRatio': Param(10.0, '-', 'with quasiStatic: the smallest ratio of the load\'s period to the bed\'s '
                               'slowest response time a cycle may have', between(1, 1e6, closedHi=True),
                               'a number in [1, 1e6]'),
@@ -235,9 +239,9 @@ class ExperimentParameters(Parameters):
 
     def loadingTimeStep(self):
         """The loading time step [s] at the start: densityStep with density scaling, the quasi-static option's first
-        step (QS_START_FACTOR times the paper's), else startTimeStep()."""
+        step (quasiStaticStart times the paper's), else startTimeStep()."""
         if self.get('quasiStatic', 0) > 0:
-            return QS_START_FACTOR * self.startTimeStep()
+            return self['quasiStaticStart'] * self.startTimeStep()
         return self['densityStep'] or self.startTimeStep()
 
     def scaledPWaveStep(self):
@@ -353,6 +357,9 @@ class ExperimentParameters(Parameters):
         """densityStep 0, or at least the paper's step (startTimeStep) with timeStep pwave; the quasi-static option
         chooses the step itself: with neither."""
         step, paper, timeStep = self['densityStep'], self.startTimeStep(), self['timeStep']
+        if 'quasiStaticStart' in self.PARAMS and self['quasiStatic'] == 0 and \
+                self['quasiStaticStart'] != QUASI_STATIC['quasiStaticStart'].default:
+            self.bad('quasiStaticStart', 'is used only with quasiStatic > 0 (got quasiStatic = 0)')
         if self.get('quasiStatic', 0) > 0 and (step > 0 or timeStep != 'pwave'):
             self.bad('quasiStatic', "chooses the density step itself: give densityStep 0 and timeStep 'pwave' (got %g s, "
                                     '%r)' % (step, timeStep))

@@ -16,7 +16,7 @@ import numpy as np
 
 from .. import _ballast, harvest, runtime
 from ..densityscaling import scaledDensity
-from .parameters import QS_START_FACTOR as START_FACTOR   # the first cycle's step over the paper's
+from .parameters import QS_START_FACTOR as START_FACTOR   # the first cycle's step over the paper's, by default
 
 LOADED = 0.01   # [-] I is reported once the grains carry this share of the peak load (p -> 0 looks inertial)
 INERTIAL_BOUND = 1e-3   # [-] the quasi-static regime's inertial number (GDR MiDi 2004): above it a run warns
@@ -97,12 +97,12 @@ class StepChoice:
     shrinks the step to put the ratio back at ratioMin / SAFETY (the ratio goes as 1 / dt, so the cycle's own
     measure says how far; on the default box a cycle at the paper's step costs about 40 steady ones, and as many
     again while the step grows back).
-    The first cycle runs at START_FACTOR times the paper's step: its measures give the second's."""
+    The first cycle runs at `start` times the paper's step (quasiStaticStart): its measures give the second's."""
 
-    def __init__(self, paper=0.0, bound=0.0, ratioMin=0.0, period=0.0, abrasionPeriod=1):
+    def __init__(self, paper=0.0, bound=0.0, ratioMin=0.0, period=0.0, abrasionPeriod=1, start=START_FACTOR):
         self.paper, self.bound, self.ratioMin, self.period = paper, bound, ratioMin, period
         self.largest = min(period / MIN_STEPS, period / max(abrasionPeriod, 1)) if period else paper
-        self.step = max(paper, min(START_FACTOR * paper, self.largest))
+        self.step = max(paper, min(start * paper, self.largest))
         self.met = []        # per closed cycle: 1 if it kept both bounds, 0 if it broke one
         self.loaded = {}     # {body id: its own critical step [s] or None}: the loading body's scaling
 
