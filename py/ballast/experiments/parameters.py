@@ -105,7 +105,8 @@ TIME_STEP = Param('pwave', '-', "the time step: 'pwave' (dtSafety x YADE's PWave
                   "safety dtSafety, from the contacts' stiffness every 10 steps; after a replacement scaled as for "
                   "pwave until its next update)", choice('pwave', 'stiffness'), "'pwave' or 'stiffness'", text)
 DENSITY_STEP = Param(0.0, 's', "density scaling: the loading's time step; every grain, fragments included, gets "
-                     "YADE's State.densityScaling so that its own P-wave step r sqrt(rho/E) reaches densityStep / "
+                     "YADE's State.densityScaling so that its own P-wave step r sqrt(rho/E) (r: a sphere's radius, a "
+                     "clump's smallest member) reaches densityStep / "
                      "dtSafety (never made lighter); other moving bodies as the experiment says; 0 = off (the "
                      "paper's). At least the paper's step", nonNegative, NUMBER_NONNEGATIVE)
 
