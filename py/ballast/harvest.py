@@ -57,6 +57,16 @@ class GrainTable:
         self.signature = _signature()
         self.iter = O.iter
         self._selections = {}
+        self._stepRadii = None
+
+    def stepRadii(self):
+        """The radius [m] of each grain's own P-wave step (GrainKind.stepRadii: a clump's smallest member) in ids'
+        order: radii where a grain is one sphere, else the kind's, read once until the grains change."""
+        if self.kind.oneSphere:
+            return self.radii
+        if self._stepRadii is None:
+            self._stepRadii = np.asarray(self.kind.stepRadii(self.ids), dtype=float)
+        return self._stepRadii
 
     def select(self, mask):
         """Indices into ids of the grains a mask selects (0: all)."""
@@ -69,6 +79,7 @@ class GrainTable:
     def replaced(self, oldId, newIds, newRadii, mask):
         """Grain oldId erased, fragments newIds (spheres of radii newRadii [m], group mask mask) added."""
         keep = self.ids != oldId
+        self._stepRadii = None
         self.ids = np.concatenate([self.ids[keep], np.asarray(newIds, dtype=np.int64)])
         self.radii = np.concatenate([self.radii[keep], np.asarray(newRadii, dtype=float)])
         self.masks = np.concatenate([self.masks[keep], np.full(len(newIds), mask, dtype=np.int64)])
@@ -84,6 +95,7 @@ class GrainTable:
         """Grain bid now of r_eq radius [m]; the sphere body whose radius changed, sphere (default: the grain, one
         sphere, then of radius), now of sphereRadius [m] (a worn clump member: the clump body keeps 0)."""
         self.radii[self.ids == bid] = radius
+        self._stepRadii = None   # a worn member may be the clump's smallest now
         if sphere is None:
             self.radiusById[bid] = radius
         else:

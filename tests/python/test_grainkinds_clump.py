@@ -200,3 +200,24 @@ def test_density_scaling_of_a_clump_follows_its_smallest_member():
     w = k.radii(ids) ** 3
     assert scaledDensity(k.radii(ids), RHO, E, own, k.stepRadii(ids)) == pytest.approx(
         RHO * np.sum(w / ((rMin * np.sqrt(RHO / E) / own) ** 2)) / np.sum(w), rel=1e-12)
+
+
+def test_grain_table_step_radii_follow_a_worn_member():
+    """The grain table keeps the grains' step radii (a clump's smallest member, a sphere's radius) until its grains
+    change: a member worn below the smallest, recorded by resized() and commit(), is the clump's step radius next."""
+    from ballast import harvest
+    _, ballast = _scene()
+    c = clump.addClump((0.0, 0.0, 0.0), 0.02, ballast, seed=1)
+    s = O.bodies.append(utils.sphere((0.2, 0.0, 0.0), 0.01, material=ballast))
+    harvest.refresh()
+    table = harvest.grains()
+    members = sorted(O.bodies[c].shape.members.keys())
+    rMin = min(O.bodies[m].shape.radius for m in members)
+    got = dict(zip(table.ids.tolist(), table.stepRadii().tolist()))
+    assert got == {c: rMin, s: 0.01}
+    worn = max(members, key=lambda m: O.bodies[m].shape.radius)   # the largest member, worn to half the smallest
+    O.bodies[worn].shape.radius = 0.5 * rMin
+    table.resized(c, table.radii[table.ids == c][0], sphere=worn, sphereRadius=0.5 * rMin)
+    table.commit()
+    got = dict(zip(table.ids.tolist(), table.stepRadii().tolist()))
+    assert got == {c: 0.5 * rMin, s: 0.01}

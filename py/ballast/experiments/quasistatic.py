@@ -32,7 +32,7 @@ def inertialNumber(p, speed, height, force, area, peak, ownStep=None):
     if not (force >= LOADED * peak and height > 0 and len(radii)):
         return math.nan
     own = p.scaledPWaveStep() if ownStep is None else ownStep
-    rho = scaledDensity(radii, p['density'], p['young'], own, _stepRadii(table))
+    rho = scaledDensity(radii, p['density'], p['young'], own, table.stepRadii())
     return float(_ballast.inertialNumber(speed / height, 2 * float(np.mean(radii)), rho, force / area))
 
 
@@ -42,21 +42,7 @@ def bedMass(p, masses, ownStep=None):
     table = harvest.grains()
     own = p.scaledPWaveStep() if ownStep is None else ownStep
     return float(np.sum(masses)) * scaledDensity(table.radii, p['density'], p['young'], own,
-                                                 _stepRadii(table)) / p['density']
-
-
-_steps = (None, None)   # (the grain table's signature, its grains' step radii)
-
-
-def _stepRadii(table):
-    """The radii of the grains' own steps (GrainKind.stepRadii) in the table's order: its radii where a grain is one
-    sphere, else the kind's, kept until the table changes."""
-    global _steps
-    if table.kind.oneSphere:
-        return table.radii
-    if _steps[0] != (id(table), table.signature):
-        _steps = ((id(table), table.signature), table.kind.stepRadii(table.ids))
-    return _steps[1]
+                                                 table.stepRadii()) / p['density']
 
 
 def responseRatio(period, mass, loadRange, resilient):
