@@ -290,12 +290,17 @@ class ExperimentParameters(Parameters):
                 if k in self.PARAMS and self[k] != allowed:
                     self.bad(k, "with grain = 'polyhedron' only %r: %s" % (allowed, why))
         if self['grain'] != 'clump':
-            for k in GRAIN_SHAPE_KEYS:
-                if self[k] != GRAIN[k].default:
-                    self.bad(k, "is used only with grain = 'clump' (got grain = %r)" % self['grain'])
+            self.refuseUnlessDefault(GRAIN_SHAPE_KEYS, "is used only with grain = 'clump' (got grain = %r)" % self['grain'])
         elif self['clumpElongation'] * self['clumpFlatness'] <= 1 / 3:
             self.bad('clumpFlatness', 'with clumpElongation = %g the grain\'s tips do not reach its core: '
                      'clumpElongation clumpFlatness must exceed 1/3' % self['clumpElongation'])
+
+    def refuseUnlessDefault(self, keys, why):
+        """Each parameter of `keys` the experiment declares left at its default, else refused with `why`: a value
+        set where nothing reads it would be lost without a word."""
+        for k in keys:
+            if k in self.PARAMS and self[k] != self.PARAMS[k].default:
+                self.bad(k, why)
 
     def checkBed(self):
         """A bed prepared soft and crushed down to rMin: rMin <= dMax/2, prepYoung <= young, rolling resistance
@@ -358,9 +363,8 @@ class ExperimentParameters(Parameters):
         """densityStep 0, or at least the paper's step (startTimeStep) with timeStep pwave; the quasi-static option
         chooses the step itself: with neither."""
         step, paper, timeStep = self['densityStep'], self.startTimeStep(), self['timeStep']
-        if 'quasiStaticStart' in self.PARAMS and self['quasiStatic'] == 0 and \
-                self['quasiStaticStart'] != QUASI_STATIC['quasiStaticStart'].default:
-            self.bad('quasiStaticStart', 'is used only with quasiStatic > 0 (got quasiStatic = 0)')
+        if self.get('quasiStatic', 0) == 0:
+            self.refuseUnlessDefault(['quasiStaticStart'], 'is used only with quasiStatic > 0 (got quasiStatic = 0)')
         if self.get('quasiStatic', 0) > 0 and (step > 0 or timeStep != 'pwave'):
             self.bad('quasiStatic', "chooses the density step itself: give densityStep 0 and timeStep 'pwave' (got %g s, "
                                     '%r)' % (step, timeStep))
