@@ -44,7 +44,7 @@ from yade import O
 from .. import runtime
 from ..runfiles import writeAtomic
 from ..settlementlaws import cyclesChanged as changed, settlementJumped
-from . import chain, grains, timestep
+from . import breakage, chain, grains, timestep
 from .cyclejump import CycleJumper
 
 COLUMNS = ('cycle', 't', 'settlement', 'resilient', 'crushes', 'abrasions', 'nCrushed', 'nAbraded', 'maxDamage',
@@ -307,6 +307,24 @@ class Cyclic:
 
     def jumped(self, cycles):
         """After a jump of `cycles` (subclasses whose own records count cycles move them on)."""
+
+
+class RecordedCycles:
+    """For a cyclic experiment whose recorder counts its cycles (a row each in recorder.cycles, recorder.jumped
+    jumped over) and that grades its grains after chosen cycles (self.gradings): the box and the triaxial test. Put
+    before :class:`Cyclic` among the bases."""
+
+    def jumped(self, cycles):
+        self.recorder.jump(cycles)
+
+    def grade(self, k):
+        """The grading after cycle k, once."""
+        if all(g['cycle'] != k for g in self.gradings):
+            self.gradings.append(breakage.grading(self, k))
+
+    def cyclesDone(self):
+        """Cycles done: those simulated (a row each) and those jumped over."""
+        return len(self.recorder.cycles) + self.recorder.jumped if self.recorder is not None else 0
 
 
 def appendSample(exp, row):

@@ -25,7 +25,7 @@ from .. import breakage, chain, grains, preparation, scene
 from ..parameters import CYCLE_JUMP
 from ...settlementlaws import bedChanged
 from ..base import Experiment
-from ..cyclic import Cyclic, appendSample
+from ..cyclic import Cyclic, RecordedCycles, appendSample
 from . import bed, outputs
 from .parameters import OWNER, PARAMS, BoxParameters
 from .recorder import LOAD, Recorder
@@ -40,7 +40,7 @@ TILT_RANGE = 0.05         # [rad] (3 degrees): a tilt beyond it is an overturn
 
 
 @runtime.persistent('BoxTest')
-class BoxTest(Cyclic, Experiment):
+class BoxTest(RecordedCycles, Cyclic, Experiment):
     """A sleeper section on a crushable ballast bed in a box under repeated loads. Keyword arguments: any
     parameter of :data:`ballast.experiments.box.parameters.PARAMS`, or parameters=check(...)."""
 
@@ -189,14 +189,6 @@ class BoxTest(Cyclic, Experiment):
                     words, row['cycle']))
                 self.say('warning: ' + self.rangeWarnings[-1])
 
-    def jumped(self, cycles):
-        self.recorder.jump(cycles)
-
-    def grade(self, k):
-        """The grading after cycle k, once."""
-        if all(g['cycle'] != k for g in self.gradings):
-            self.gradings.append(breakage.grading(self, k))
-
     def startFrames(self):
         """With vtk: a VTK frame now and every vtk load cycles (a callback at simulated times from the start of
         cycling; a run reopened with vtk gets it then)."""
@@ -210,10 +202,6 @@ class BoxTest(Cyclic, Experiment):
         """A frame of boxes.pvd (outputs.writeFrame), once at a time."""
         if not self.frames or self.frames[-1][0] < O.time - self.recorder.t0:
             outputs.writeFrame(self)
-
-    def cyclesDone(self):
-        """Cycles done: those simulated (a row each) and those jumped over."""
-        return len(self.recorder.cycles) + self.recorder.jumped if self.recorder is not None else 0
 
     def cycleFrame(self):
         return outputs.cycleTable(self)

@@ -20,7 +20,7 @@ from ...params import requireWritableDir, validate
 from ...settlementlaws import bedChanged
 from .. import breakage, chain, grains, preparation, quasistatic, scene
 from ..base import Experiment
-from ..cyclic import Cyclic, appendSample
+from ..cyclic import Cyclic, RecordedCycles, appendSample
 from ..parameters import CYCLE_JUMP
 from . import monotonic, outputs, specimen
 from .membrane import Membrane
@@ -39,7 +39,7 @@ RAMP = 0.02   # [s] the cell pressure and the axial load rise to p' over this ti
 
 
 @runtime.persistent('TriaxialTest')
-class TriaxialTest(Cyclic, Experiment):
+class TriaxialTest(RecordedCycles, Cyclic, Experiment):
     """A crushable ballast specimen in a triaxial cell under a cyclic deviator. Keyword arguments: any parameter of
     :data:`ballast.experiments.triaxial.parameters.PARAMS`, or parameters=check(...)."""
 
@@ -221,16 +221,6 @@ class TriaxialTest(Cyclic, Experiment):
             c = dict(zip(Recorder.CYCLE_COLUMNS, self.recorder.cycles[-1]))
             self.cycleDone(k, c['settlement'], bool(bedChanged(c['crushes'], c['abrasions'])), c['inertialMax'],
                            c['responseRatio'])
-
-    def jumped(self, cycles):
-        self.recorder.jump(cycles)
-
-    def grade(self, k):
-        if all(g['cycle'] != k for g in self.gradings):
-            self.gradings.append(breakage.grading(self, k))
-
-    def cyclesDone(self):
-        return len(self.recorder.cycles) + self.recorder.jumped if self.recorder is not None else 0
 
     def cycleFrame(self):
         return outputs.cycleTable(self)
