@@ -290,7 +290,8 @@ class ExperimentParameters(Parameters):
                 if k in self.PARAMS and self[k] != allowed:
                     self.bad(k, "with grain = 'polyhedron' only %r: %s" % (allowed, why))
         if self['grain'] != 'clump':
-            self.refuseUnlessDefault(GRAIN_SHAPE_KEYS, "is used only with grain = 'clump' (got grain = %r)" % self['grain'])
+            self.refuseUnlessDefault(GRAIN_SHAPE_KEYS,
+                                     "is used only with grain = 'clump' (got grain = %r)" % self['grain'])
         elif self['clumpElongation'] * self['clumpFlatness'] <= 1 / 3:
             self.bad('clumpFlatness', 'with clumpElongation = %g the grain\'s tips do not reach its core: '
                      'clumpElongation clumpFlatness must exceed 1/3' % self['clumpElongation'])
