@@ -7,7 +7,6 @@ The study's runs of each option (ballast.analysis.options.OPTIONS) are paired by
 the paper's settings at the same f and T_c: the same study's, or those of --reference (an older study's
 records); writes comparison.json, comparison.md (the table of docs/performance.md) and options.png."""
 import argparse
-import json
 import os
 import sys
 
@@ -34,11 +33,7 @@ def main(argv=None):
     except (StudyError, ValueError, KeyError) as e:
         print('fast_options.py: %s' % e, file=sys.stderr)
         return 2
-    os.makedirs(a.out, exist_ok=True)
-    with open(os.path.join(a.out, 'comparison.json'), 'w') as fh:
-        json.dump(result, fh, indent=1)
-    with open(os.path.join(a.out, 'comparison.md'), 'w') as fh:  # the table of docs/performance.md
-        fh.write(options.markdown(result))
+    options.write(result, a.out)
     for name, r in result.items():
         print('%-9s %2d seeds: delta %.1f mm (paper %.1f), difference %.1f mm [%.1f, %.1f], Wilcoxon p = %.3g, '
               'avalanching %.0f %% (paper %.0f %%), changed %s, CPU x%.2f, loading steps x%.2f' % (

@@ -70,3 +70,17 @@ def test_the_markdown_table_holds_the_numbers():
     assert cells[3].startswith('+10.3 [')                     # (5 + 0.2 + 36 + 0.1) / 4 mm
     assert cells[7] == '50 % (25 %)' and cells[8] == '1 of 4'  # seed 3: 4 mm quiet, 40 mm avalanche
     assert cells[9:] == ['x0.50', 'x0.50']
+
+
+def test_avalanche_shares_by_hand():
+    """Option quiet on all five seeds, the reference avalanching on four: Fisher's two-sided p is the hypergeometric
+    tail of the tables as extreme, (6 + 6) / C(10, 5) = 12 / 252; McNemar's, the four discordant pairs all one way,
+    2 / 2^4. Equal shares give 1."""
+    opt = runs([1, 2, 3, 4, 5], [0.0004, 0.0005, 0.0003, 0.0003, 0.0002], [3, 12, 2, 2, 0], [1] * 5)
+    ref = runs([1, 2, 3, 4, 5], [0.057, 0.0003, 0.052, 0.035, 0.041], [209, 1, 219, 233, 214], [1] * 5)
+    c = options.compare(opt, ref)
+    assert c['option']['avalanching'] == 0 and c['reference']['avalanching'] == 0.8
+    assert c['pFisherAvalanching'] == pytest.approx(12 / 252, rel=1e-12)
+    assert c['pMcNemarAvalanching'] == pytest.approx(2 / 16, rel=1e-12)
+    same = options.compare(ref, ref)
+    assert same['pFisherAvalanching'] == 1.0 and same['pMcNemarAvalanching'] == 1.0

@@ -13,13 +13,12 @@ Per quantity and cycle N, over the seeds both reached, with d_s = option - refer
 The margin is itself estimated from the seeds (with 5 seeds it is uncertain by about a third); the verdict says
 what these seeds show, not more. NumPy, pandas, scipy; no YADE."""
 import math
-import re
 
 import numpy as np
 import pandas as pd
 
 from .effects import meanInterval
-from .pairs import common, oneRunPerSeed
+from .pairs import common, oneRunPerSeed, parseSelection
 from .settlement import realizationRuns, total, variantLabel
 
 VERDICTS = ('changed', 'within the seed scatter', 'not shown either way')
@@ -30,24 +29,11 @@ def selection(text):
     parameter values (a study whose table holds both the option's rows and the reference's). Returns (path, the
     label values() gives those runs: settlement.variantLabel's spelling, a number as %g: 1e-3 is 0.001), the
     names. ValueError for a selection that is not NAME=VALUE pairs."""
-    m = re.fullmatch(r'(.+)\[(.*)\]', text)
-    if m is None:
+    path, chosen = parseSelection(text, 'agreement')
+    if not chosen:
         return text, text, ()
-    path, pairs = m.group(1), m.group(2).split()
-    if not pairs or not all(re.fullmatch(r'[A-Za-z_]\w*=\S+', x) for x in pairs):
-        raise ValueError('agreement: %r: a selection is PATH[NAME=VALUE ...], e.g. docs/studies/qs-box-crush'
-                         '[quasiStatic=1e-3]' % text)
-    chosen = {k: _number(v) for k, v in (x.split('=', 1) for x in pairs)}
     names = tuple(sorted(chosen))
     return path, variantLabel(path, chosen, names), names
-
-
-def _number(text):
-    """A selection's value as a run's parameter holds it: a number as a float (variantLabel spells it %g), else text."""
-    try:
-        return float(text)
-    except ValueError:
-        return text
 
 
 def values(paths, quantities, at, by=()):

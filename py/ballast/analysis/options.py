@@ -5,6 +5,8 @@ paper's rows of the same study, or an older study's records): the response (delt
 at the applied peak of eq. 8, what Fig. 5 reads), the crushes, the share of realizations that
 avalanche, a paired and a two-sample test, the paired mean difference with its 95 % interval, and the
 CPU ratio per seed. Needs no YADE."""
+import json
+import os
 
 import numpy as np
 import pandas as pd
@@ -72,6 +74,7 @@ def compare(option, reference, response='deltaAtAppliedPeak'):
            'pWilcoxon': 1.0 if same else float(stats.wilcoxon(x, y).pvalue),
            'pMannWhitney': float(stats.mannwhitneyu(x, y, alternative='two-sided').pvalue),
            'changedClass': [int(s) for s, xi, yi in zip(seeds, x, y) if (xi > AVALANCHE) != (yi > AVALANCHE)],
+           **avalancheTests(x > AVALANCHE, y > AVALANCHE),
            'cpuRatioMedian': float(np.median(a.loc[seeds, 'cpuSeconds'].to_numpy(float) /
                                              b.loc[seeds, 'cpuSeconds'].to_numpy(float)))}
     if 'stepsByPhase.load' in a and 'stepsByPhase.load' in b:  # the machine-independent cost
@@ -80,12 +83,26 @@ def compare(option, reference, response='deltaAtAppliedPeak'):
     return out
 
 
-def markdown(result):
+def avalancheTests(a, b):
+    """Do two sides avalanche equally often? a, b: whether each seed avalanched (booleans, paired by position).
+    Fisher's exact test of the two shares as independent samples (two-sided; right where the two sides' beds are
+    not the same grains, e.g. two grain kinds of one seed), and McNemar's exact test of the pairs (the binomial
+    test of the seeds that avalanched on one side only: right where a seed is one bed on both sides):
+    {'pFisherAvalanching', 'pMcNemarAvalanching'}, 1.0 where the sides do not differ."""
+    a, b = np.asarray(a, dtype=bool), np.asarray(b, dtype=bool)
+    table = [[int(a.sum()), int((~a).sum())], [int(b.sum()), int((~b).sum())]]
+    onlyA, onlyB = int(np.sum(a & ~b)), int(np.sum(b & ~a))
+    return {'pFisherAvalanching': float(stats.fisher_exact(table).pvalue),
+            'pMcNemarAvalanching': float(stats.binomtest(onlyA, onlyA + onlyB, 0.5).pvalue) if onlyA + onlyB else 1.0}
+
+
+def markdown(result, reference="paper's settings"):
     """The comparisons ({option: compare()}) as the table of docs/performance.md: per option the means of
     delta at the applied peak [mm], the paired difference with its 95 % interval, Cohen's d_z, the two
     tests' p, the share avalanching, the seeds that changed class, and the loading-step and CPU ratios."""
-    lines = ['| option | seeds | delta, mean [mm] (paper\'s settings) | paired difference [mm], 95 % | d_z | Wilcoxon p '
-             '| Mann-Whitney p | avalanching (paper\'s) | seeds that changed class | loading steps | CPU |',
+    lines = ['| option | seeds | delta, mean [mm] (%s) | paired difference [mm], 95 %% | d_z | Wilcoxon p '
+             '| Mann-Whitney p | avalanching (%s) | seeds that changed class | loading steps | CPU |' % (
+                 reference, reference.replace(' settings', '')),
              '|' + '---|' * 11]
     for name, r in result.items():
         changed = r['changedClass']
@@ -98,7 +115,17 @@ def markdown(result):
     return '\n'.join(lines) + '\n'
 
 
-def figure(pairs, path):
+def write(result, out, reference="paper's settings"):
+    """The comparisons ({name: compare()}) as out/comparison.json and out/comparison.md (markdown's table); the
+    folder made if missing."""
+    os.makedirs(out, exist_ok=True)
+    with open(os.path.join(out, 'comparison.json'), 'w') as fh:
+        json.dump(result, fh, indent=1)
+    with open(os.path.join(out, 'comparison.md'), 'w') as fh:
+        fh.write(markdown(result, reference))
+
+
+def figure(pairs, path, reference="paper's settings"):
     """delta at the applied peak of each seed, the option against the paper's settings, one panel per
     option (pairs: {option: (option frame, reference frame)}), with the 1:1 line."""
     import matplotlib
@@ -113,7 +140,7 @@ def figure(pairs, path):
         top = max(float(np.max(x)), float(np.max(y)), 1.0) * 1.05
         ax.plot([0, top], [0, top], 'k--', lw=0.8)
         ax.plot(x, y, 'o', ms=5)
-        ax.set_xlabel('paper\'s settings: $\\delta$ at the applied peak [mm]')
+        ax.set_xlabel('%s: $\\delta$ at the applied peak [mm]' % reference)
         ax.set_ylabel('%s: $\\delta$ [mm]' % name)
         ax.set_title('%s, %d seeds' % (name, len(seeds)), fontsize=9)
         ax.grid(alpha=0.3)

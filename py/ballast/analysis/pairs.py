@@ -1,6 +1,7 @@
 """Runs paired by seed: the one rule every analysis that compares two groups of runs seed by seed uses. A seed is one
 realization (one stored packing or bed), so two runs of the same seed differ only by what their groups change; a
 group that holds two runs of one seed would make the pair ambiguous, and is refused. No YADE."""
+import re
 
 
 def oneRunPerSeed(frame, what, seed='seed', run=None):
@@ -41,3 +42,26 @@ def common(*groups):
     or any iterable of keys."""
     sets = [set(g.index if hasattr(g, 'index') and not isinstance(g, (list, tuple)) else g) for g in groups]
     return sorted(set.intersection(*sets)) if sets else []
+
+
+def parseSelection(text, what):
+    """A study's runs as a command line names them: 'PATH', or 'PATH[NAME=VALUE ...]' for its runs with those
+    parameter values (a study whose table holds the rows of both sides). Returns (PATH, {NAME: VALUE}), a value a
+    float where it reads as a number, else text. ValueError (its message begins with `what`) for a selection that is
+    not NAME=VALUE pairs."""
+    m = re.fullmatch(r'(.+)\[(.*)\]', text)
+    if m is None:
+        return text, {}
+    path, pairs = m.group(1), m.group(2).split()
+    if not pairs or not all(re.fullmatch(r'[A-Za-z_]\w*=\S+', x) for x in pairs):
+        raise ValueError('%s: %r: a selection is PATH[NAME=VALUE ...], e.g. docs/studies/qs-box-crush'
+                         '[quasiStatic=1e-3]' % (what, text))
+    return path, {k: _number(v) for k, v in (x.split('=', 1) for x in pairs)}
+
+
+def _number(text):
+    """A selection's value as a run's parameter holds it: a number as a float, else text."""
+    try:
+        return float(text)
+    except ValueError:
+        return text
