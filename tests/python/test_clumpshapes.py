@@ -2,6 +2,7 @@
 closed form of two overlapping spheres, r_eq of the union against an independent estimate, determinism,
 and the input checks. No YADE."""
 import math
+import re
 
 import numpy as np
 import pytest
@@ -87,3 +88,50 @@ def test_cross_pairs_are_the_overlapping_spheres_of_different_pieces():
     assert crossPairs(c, [1, 1, 1, 1], [0, 0, 1, 1]).tolist() == [[1, 2]]
     assert crossPairs(c, [1, 1, 1, 1], [0, 1, 0, 1]).tolist() == [[0, 1], [1, 2]]
     assert crossPairs(c, [1, 1, 1, 1], [0, 0, 0, 0]).shape == (0, 2)
+
+
+# ---------------------------------------------------------------- templates from a file (clumpFile)
+def writeCsv(path, rows, header='template,x,y,z,r'):
+    path.write_text(header + '\n' + ''.join(','.join(str(v) for v in row) + '\n' for row in rows))
+    return str(path)
+
+
+def test_templates_read_from_a_file_in_their_order(tmp_path):
+    f = writeCsv(tmp_path / 't.csv', [('b', 0, 0, 0, 1), ('a', 0, 0, 0, 2), ('b', 1.5, 0, 0, 1)])
+    t = clumpshapes.readTemplates(f)
+    assert [name for name, _, _ in t] == ['b', 'a']
+    assert t[0][1].tolist() == [[0, 0, 0], [1.5, 0, 0]] and t[0][2].tolist() == [1, 1]
+    assert t[1][1].tolist() == [[0, 0, 0]] and t[1][2].tolist() == [2]
+
+
+@pytest.mark.parametrize('rows,header,words', [
+    ([], 'template,x,y,z,r', 'no rows'),
+    ([(1, 0, 0, 0, 1)], 'template,x,y,r', 'no column z'),
+    ([(1, 0, 0, 0, 1), (1, 0, 'a', 0, 1)], 'template,x,y,z,r', 'line 3: x, y, z and r must be finite numbers'),
+    ([(1, 0, 0, 0, 1), (1, 0, 0, 0, 0)], 'template,x,y,z,r', 'line 3: r = 0 must be > 0'),
+    ([(7, 0, 0, 0, 1), (7, 2.5, 0, 0, 1)], 'template,x,y,z,r',
+     'template 7 (lines 2-3): its spheres do not all overlap'),
+])
+def test_a_bad_template_file_is_refused_with_its_line(tmp_path, rows, header, words):
+    f = writeCsv(tmp_path / 'bad.csv', rows, header)
+    with pytest.raises(ValueError, match=re.escape(words)):
+        clumpshapes.readTemplates(f)
+
+
+def test_a_template_in_its_principal_frame_at_unit_radius():
+    """Two spheres of radius 1, 1.2 apart along (1, 1, 1) and shifted: turned so the axis lies along x, centred on the
+    bounding box (members at -+0.6 s), scaled by s so the union (the lens formula) has r_eq 1; a third small sphere
+    on the side makes y the intermediate axis. The volume is 4/3 pi by construction, the scale within four of the
+    Monte Carlo's standard errors of the lens formula's."""
+    u = np.array([1.0, 1.0, 1.0]) / math.sqrt(3)
+    shift = np.array([0.3, -2.0, 5.0])
+    c, r, V, err = clumpshapes.principalTemplate([shift, shift + 1.2 * u], [1.0, 1.0], samples=400000, seed=5)
+    exact = 2 * 4 / 3 * math.pi - math.pi * (4 + 1.2) * (2 - 1.2) ** 2 / 12
+    s = (4 / 3 * math.pi / exact) ** (1 / 3)
+    assert V == pytest.approx(4 / 3 * math.pi, rel=1e-12)
+    assert r[0] == pytest.approx(s, rel=4 * (err / V) / 3 + 1e-12)   # r_eq ~ V^(1/3): a third of V's relative error
+    assert np.abs(c[:, 1:]).max() < 1e-12 and sorted(c[:, 0] / r[0]) == pytest.approx([-0.6, 0.6], rel=1e-12)
+    w = np.array([0.0, 0.6, 0.0])   # a small third sphere off the axis, in the plane of y
+    c3, r3, _, _ = clumpshapes.principalTemplate([[-0.6, 0, 0], [0.6, 0, 0], w], [1.0, 1.0, 0.5], samples=20000)
+    L, I, S = principalExtents(c3, r3)
+    assert L > I > S and np.abs(c3[:, 2]).max() < 1e-12

@@ -9,7 +9,7 @@ import pytest
 
 from ballast import experiments
 from ballast.experiments.parameters import (CONTACT, CYCLE_JUMP, ENGINES, GRAIN, GRAINS, INTEGRATION, PREPARATION, RUN,
-                                            SEED, STEEL, ExperimentParameters)
+                                            SEED, STEEL, ExperimentParameters, grainKey)
 from ballast.params import ParamError
 
 NAMES = ('box', 'oedometer', 'single_particle')
@@ -142,6 +142,8 @@ ALL = NAMES + ('triaxial',)
     # 0.5 x 0.6 = 0.3 <= 1/3: the tips (at L - S from the core, radius S) do not reach the core
     ({'grain': 'clump', 'clumpElongation': 0.5}, 'clumpFlatness', 'clumpElongation clumpFlatness must exceed 1/3'),
     ({'clumpSpheres': 12}, 'clumpSpheres', "is used only with grain = 'clump' (got grain = 'sphere')"),
+    ({'clumpFile': 'shapes.csv'}, 'clumpFile', "is used only with grain = 'clump' (got grain = 'sphere')"),
+    ({'grain': 'clump', 'clumpFile': '/nonexistent/shapes.csv'}, 'clumpFile', 'no such file'),
 ])
 def test_the_grain_parameters_are_checked_in_every_experiment(name, values, param, words):
     got, message = refused(name, values)
@@ -176,9 +178,34 @@ def test_sphere_samples_keep_their_store_keys_and_a_clump_sample_has_its_own():
         assert keyOf(p) == _oldKey({k: p[k] for k in names}, version, extra, prefix, 3), prefix
         q = mod.check({'seed': 3, 'grain': 'clump'})
         d, name = keyOf(q)
-        assert {k: d[k] for k in GRAIN} == {'grain': 'clump', 'clumpElongation': 0.7, 'clumpFlatness': 0.6,
-                                             'clumpSpheres': 8, 'clumpTemplates': 20}
+        # clumpFile in the key only when given: the clump samples stored before it keep their names
+        assert {k: d[k] for k in GRAIN if k in d} == {'grain': 'clump', 'clumpElongation': 0.7, 'clumpFlatness': 0.6,
+                                                       'clumpSpheres': 8, 'clumpTemplates': 20}
+        assert name == _oldKey({k: q[k] for k in names}, version, dict(extra, **{k: q[k] for k in GRAIN
+                                                                                 if k != 'clumpFile'}), prefix, 3)[1]
         assert name != keyOf(p)[1] and name.startswith('%s-seed3-' % prefix)
     # a name stored before this change (the default oedometer's packing, seed 1), held by hand
     assert oed.packingKey(oed.check({}))[1] == _oldKey({k: oed.check({})[k] for k in oed.PACKING_KEYS},
                                                        oed.PACKING_VERSION, {}, 'packing', 1)[1]
+
+
+@pytest.mark.parametrize('name', ALL)
+def test_a_clump_file_is_read_when_checked_and_keys_the_sample_by_its_content(name, tmp_path):
+    """clumpFile: its templates read with the parameters (a bad row refused by its line, before any work), the
+    builder's parameters refused beside it, and the store key holding the file's SHA-1, not its path."""
+    import hashlib
+    good = tmp_path / 'shapes.csv'
+    good.write_text('template,x,y,z,r\n1,0,0,0,1\n1,1.2,0,0,1\n')
+    c = check(name, grain='clump', clumpFile=str(good))
+    assert c['clumpFile'] == str(good)
+    bad = tmp_path / 'bad.csv'
+    bad.write_text('template,x,y,z,r\n1,0,0,0,1\n1,0,0,0,-2\n')
+    got, message = refused(name, {'grain': 'clump', 'clumpFile': str(bad)})
+    assert got == 'clumpFile' and 'line 3: r = -2 must be > 0' in message, message
+    got, message = refused(name, {'grain': 'clump', 'clumpFile': str(good), 'clumpSpheres': 12})
+    assert got == 'clumpSpheres' and 'the templates of clumpFile' in message, message
+    key = grainKey(c)
+    assert key['clumpFile'] == hashlib.sha1(good.read_bytes()).hexdigest()
+    copy = tmp_path / 'elsewhere.csv'
+    copy.write_bytes(good.read_bytes())
+    assert grainKey(check(name, grain='clump', clumpFile=str(copy))) == key   # the content, not the path

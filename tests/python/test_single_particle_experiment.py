@@ -173,3 +173,33 @@ def test_a_clump_between_the_platens_crushes_and_splits(tmp_path):
     e = next(e for e in O.engines if isinstance(e, BallastCrushEngine)).events[0]
     assert e['id'] == test.tester.grain[0] and 2 <= len(e['newIds']) <= 4
     assert e['strength'] == pytest.approx(3e5 / 0.015 ** 0.5, rel=1e-12)   # f_t0 / r_eq^m with r_eq the clump's
+
+
+def test_a_clump_from_a_template_file_lies_flat_and_crushes_at_its_closed_form(tmp_path):
+    """clumpFile: three spheres of radius 1 at the corners of a triangle of side 1.2 (in the file's units, tilted out of
+    every axis plane). The sample's template is the file's in its principal frame at r_eq 1 (the triangle's normal
+    along z), so the grain lies flat between the platens, standing h = 2 of its members' radius high, and crushes at
+    F = ft0 r_eq^-m V / h as a built clump does."""
+    import numpy as np
+    from yade import O, Quaternion, Vector3
+    from ballast.experiments.clumpsample import ClumpSample
+    from ballast.grainkinds.clumpshapes import principalTemplate, readTemplates
+    turn = Quaternion(Vector3(1, 2, 3).normalized(), 0.7)
+    corners = [turn * Vector3(1.2 * math.cos(a), 1.2 * math.sin(a), 0) / math.sqrt(3) for a in (0, 2.094395, 4.188790)]
+    f = tmp_path / 'triangle.csv'
+    f.write_text('template,x,y,z,r\n' + ''.join('tri,%r,%r,%r,1\n' % tuple(c) for c in corners))
+    test = SingleParticle(grain='clump', clumpFile=str(f), diameters=[0.03], ft0=3e5, m=0.5, speed=0.002,
+                          results=str(tmp_path), progress=60, seed=4)
+    test.prepare()
+    (c, r, v), = ClumpSample.current().templates
+    _, c0, r0 = readTemplates(str(f))[0]
+    want = principalTemplate(c0, r0, seed=[4, 0])
+    assert np.array_equal(c, want[0]) and np.array_equal(r, want[1]) and v == want[2]
+    top, bottom = O.bodies[test.tester.top[0]], O.bodies[test.tester.bottom[0]]
+    h = (top.state.pos[2] - top.shape.extents[2]) - (bottom.state.pos[2] + bottom.shape.extents[2])
+    assert h == pytest.approx(2 * r[0] * 0.015, rel=1e-6)   # flat: the three members touch both platens
+    s = test.load()
+    t = test.table()
+    V = 4 / 3 * math.pi * 0.015 ** 3
+    assert t.expectedForce[0] == pytest.approx(3e5 / 0.015 ** 0.5 * V / h, rel=1e-9)
+    assert t.force[0] == pytest.approx(t.expectedForce[0], rel=0.03) and s['nCrushed'] == 1

@@ -19,7 +19,7 @@ from yade import O, Quaternion, Vector3, utils
 
 from .. import runtime
 from ..grainkinds import clump
-from ..grainkinds.clumpshapes import clumpMembers
+from ..grainkinds.clumpshapes import clumpMembers, principalTemplate, readTemplates
 from .scene import GRAIN_MASK
 
 ROW = 9   # a stored grain: template, q (w, x, y, z), c (x, y, z) [m], r [m]
@@ -47,9 +47,14 @@ class ClumpSample:
 
     @classmethod
     def build(cls, p):
-        """clumpTemplates shapes from p's seed and clump parameters, registered with the scene."""
+        """clumpTemplates shapes from p's seed and clump parameters, or with clumpFile that file's templates (each in
+        its principal frame at r_eq = 1), registered with the scene."""
         t = []
-        for j in range(p['clumpTemplates']):
+        if p.get('clumpFile'):
+            for j, (_, c0, r0) in enumerate(readTemplates(p['clumpFile'])):
+                c, r, v, _ = principalTemplate(c0, r0, seed=[p['seed'], j])
+                t.append((c, r, v))
+        for j in range(0 if t else p['clumpTemplates']):
             c, r, v, _ = clumpMembers(1.0, elongation=p['clumpElongation'], flatness=p['clumpFlatness'],
                                       n=p['clumpSpheres'], seed=[p['seed'], j])
             t.append((c, r, v))

@@ -8,6 +8,7 @@ its --help and docs/parameters.md list them, and may give a declaration another 
 ``.withDefault(...)``; its own parameters it declares in its folder. Needs no YADE: the study runner
 reads it in plain Python.
 """
+import hashlib
 import math
 import os
 
@@ -56,8 +57,13 @@ GRAIN = {
     'clumpTemplates': Param(20, '-', "with grain 'clump': clump shapes built from the seed for a sample, each grain one "
                             'of them scaled to its radius and turned at random (a shape costs about 1 s to build: its '
                             'union volume by Monte Carlo)', intBetween(1, 1000), 'an integer in [1, 1000]'),
+    'clumpFile': Param('', 'path', "with grain 'clump': clump templates from a CSV file instead of the shape "
+                       'parameters (columns template, x, y, z, r: a row a member sphere, any one length unit), each '
+                       'turned to its principal axes and scaled to r_eq = 1, every grain one of them (docs/grains.md, '
+                       '"Templates from a file")', anyText, 'a path to a CSV file, or empty', text),
 }
 GRAIN_SHAPE_KEYS = tuple(k for k in GRAIN if k != 'grain')
+CLUMP_BUILDER_KEYS = ('clumpElongation', 'clumpFlatness', 'clumpSpheres', 'clumpTemplates')   # clumpFile replaces them
 # the measured cost of polyhedra that makes a box or a triaxial sample of them too slow (bench/bench_grains.py)
 POLYHEDRON_COST = '140 us a grain-step, 363 times the spheres (bench/grains.json), about 30 h of CPU a 300-grain oedometer'
 
@@ -65,8 +71,15 @@ POLYHEDRON_COST = '140 us a grain-step, 363 times the spheres (bench/grains.json
 
 def grainKey(p):
     """What of GRAIN decides a stored sample, for its store key: nothing for the paper's spheres (their stored
-    samples keep their names), else the kind and its shape parameters."""
-    return {} if p['grain'] == GRAIN_KIND else {k: p[k] for k in GRAIN}
+    samples keep their names), else the kind and its shape parameters; a clumpFile by its content (its SHA-1), and
+    only when given (the samples stored before it keep their names)."""
+    if p['grain'] == GRAIN_KIND:
+        return {}
+    d = {k: p[k] for k in GRAIN if k != 'clumpFile'}
+    if p['clumpFile']:
+        with open(p['clumpFile'], 'rb') as fh:
+            d['clumpFile'] = hashlib.sha1(fh.read()).hexdigest()
+    return d
 
 
 # the steel of the walls, plates and platens (section 4)
@@ -292,9 +305,23 @@ class ExperimentParameters(Parameters):
         if self['grain'] != 'clump':
             self.refuseUnlessDefault(GRAIN_SHAPE_KEYS,
                                      "is used only with grain = 'clump' (got grain = %r)" % self['grain'])
+        elif self['clumpFile']:
+            self.refuseUnlessDefault(CLUMP_BUILDER_KEYS, 'the templates of clumpFile = %r replace it (leave it out, or '
+                                                         'leave clumpFile out)' % self['clumpFile'])
+            self.checkClumpFile()
         elif self['clumpElongation'] * self['clumpFlatness'] <= 1 / 3:
             self.bad('clumpFlatness', 'with clumpElongation = %g the grain\'s tips do not reach its core: '
                      'clumpElongation clumpFlatness must exceed 1/3' % self['clumpElongation'])
+
+    def checkClumpFile(self):
+        """clumpFile there and its templates readable (clumpshapes.readTemplates names the line of a fault)."""
+        from ..grainkinds.clumpshapes import readTemplates
+        if not os.path.isfile(self['clumpFile']):
+            self.bad('clumpFile', 'no such file')
+        try:
+            readTemplates(self['clumpFile'])
+        except ValueError as e:
+            self.bad('clumpFile', str(e))
 
     def refuseUnlessDefault(self, keys, why):
         """Each parameter of `keys` the experiment declares left at its default, else refused with `why`: a value

@@ -21,6 +21,9 @@ Defaults (choices, stated as such): e = 0.7, f = 0.6, n = 8: a moderately elonga
 published measurement of railway ballast's axis ratios was found in the sources searched; the descriptor
 definitions (Ei = b/a, Fi = c/b, a >= b >= c) are those of e.g. the SHPSG shape generator
 (github.com/budizhao/SHPSG). Replace the defaults with measured ones when they are at hand.
+
+Templates can also come from a CSV file (:func:`readTemplates`, the experiments' ``clumpFile``), each put in its
+principal frame at r_eq = 1 (:func:`principalTemplate`), for shapes the descriptors do not give.
 """
 import math
 
@@ -233,3 +236,65 @@ def principalExtents(centres, radii):
     c = np.asarray(centres, dtype=float)
     r = np.asarray(radii, dtype=float)[:, None]
     return (c + r).max(axis=0) - (c - r).min(axis=0)
+
+
+TEMPLATE_COLUMNS = ('template', 'x', 'y', 'z', 'r')
+
+
+def readTemplates(path):
+    """The clump templates of a CSV file, a row a member sphere: columns template (a name or number), x, y, z (its
+    centre) and r (its radius), in any one length unit. Returns [(name, centres (n, 3), radii (n,))] in the order the
+    templates first appear. ValueError saying what is wrong, with the file's line where a row is: unreadable, a
+    column missing, x, y, z or r not a finite number, r <= 0, more than MAX_SPHERES spheres, or spheres that do not
+    all hang together (their overlap graph is not connected: a clump is one body)."""
+    import pandas as pd
+    try:
+        f = pd.read_csv(path)
+    except (OSError, ValueError, pd.errors.ParserError) as e:   # EmptyDataError is a ValueError
+        raise ValueError('not readable as CSV (%s)' % e) from None
+    missing = [c for c in TEMPLATE_COLUMNS if c not in f.columns]
+    if missing:
+        raise ValueError('no column %s; expected the columns %s' % (', '.join(missing), ', '.join(TEMPLATE_COLUMNS)))
+    if not len(f):
+        raise ValueError('no rows: expected a row per member sphere')
+    xyzr = f[list(TEMPLATE_COLUMNS[1:])].apply(pd.to_numeric, errors='coerce').to_numpy(float)
+
+    def line(i):   # the file's line of row i: the header is line 1
+        return int(i) + 2
+    bad = np.flatnonzero(~np.all(np.isfinite(xyzr), axis=1))
+    if len(bad):
+        raise ValueError('line %d: x, y, z and r must be finite numbers' % line(bad[0]))
+    bad = np.flatnonzero(xyzr[:, 3] <= 0)
+    if len(bad):
+        raise ValueError('line %d: r = %g must be > 0' % (line(bad[0]), xyzr[bad[0], 3]))
+    out = []
+    for name, rows in f.groupby('template', sort=False).indices.items():
+        c, r = xyzr[rows, :3], xyzr[rows, 3]
+        if len(r) > MAX_SPHERES:
+            raise ValueError('template %s: %d spheres, more than %d' % (name, len(r), MAX_SPHERES))
+        if not _connected(c, r):
+            raise ValueError('template %s (lines %d-%d): its spheres do not all overlap into one body' % (
+                name, line(rows.min()), line(rows.max())))
+        out.append((name, c, r))
+    return out
+
+
+def principalTemplate(centres, radii, samples=SAMPLES, seed=0):
+    """A template as clumpMembers builds them: turned to its principal axes (the largest second moment of its spheres'
+    volumes about their centroid along x, the smallest along z, so a grain laid flat lies on its flat side), centred
+    on its spheres' bounding box and scaled so the union's volume-equivalent radius is 1. Returns (centres (n, 3),
+    radii (n,), V, its Monte Carlo standard error) as clumpMembers (V = 4/3 pi by construction)."""
+    c = np.asarray(centres, dtype=float).reshape(-1, 3)
+    r = np.asarray(radii, dtype=float).reshape(-1)
+    w = r ** 3
+    d = c - (w[:, None] * c).sum(axis=0) / w.sum()
+    # each sphere's own second moment is r^2/5 about any axis through its centre
+    M = np.einsum('i,ij,ik->jk', w, d, d) + np.eye(3) * float(np.sum(w * r ** 2)) / 5
+    axes = np.linalg.eigh(M)[1][:, ::-1]   # columns: the largest moment first
+    if np.linalg.det(axes) < 0:
+        axes[:, 2] = -axes[:, 2]   # a rotation, not a mirror image
+    c = d @ axes
+    c -= ((c - r[:, None]).min(axis=0) + (c + r[:, None]).max(axis=0)) / 2
+    v0, err0 = unionVolume(c, r, samples=samples, seed=seed)
+    s = (4.0 * math.pi / (3.0 * v0)) ** (1.0 / 3.0)
+    return c * s, r * s, v0 * s ** 3, err0 * s ** 3
