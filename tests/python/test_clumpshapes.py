@@ -7,6 +7,7 @@ import re
 import numpy as np
 import pytest
 
+from ballast import templatefile
 from ballast.grainkinds import clumpshapes
 from ballast.grainkinds.clumpshapes import clumpMembers, principalExtents, unionVolume
 
@@ -98,7 +99,7 @@ def writeCsv(path, rows, header='template,x,y,z,r'):
 
 def test_templates_read_from_a_file_in_their_order(tmp_path):
     f = writeCsv(tmp_path / 't.csv', [('b', 0, 0, 0, 1), ('a', 0, 0, 0, 2), ('b', 1.5, 0, 0, 1)])
-    t = clumpshapes.readTemplates(f)
+    t = templatefile.readTemplates(f)
     assert [name for name, _, _ in t] == ['b', 'a']
     assert t[0][1].tolist() == [[0, 0, 0], [1.5, 0, 0]] and t[0][2].tolist() == [1, 1]
     assert t[1][1].tolist() == [[0, 0, 0]] and t[1][2].tolist() == [2]
@@ -115,7 +116,7 @@ def test_templates_read_from_a_file_in_their_order(tmp_path):
 def test_a_bad_template_file_is_refused_with_its_line(tmp_path, rows, header, words):
     f = writeCsv(tmp_path / 'bad.csv', rows, header)
     with pytest.raises(ValueError, match=re.escape(words)):
-        clumpshapes.readTemplates(f)
+        templatefile.readTemplates(f)
 
 
 def test_a_template_in_its_principal_frame_at_unit_radius():

@@ -3,7 +3,6 @@ crushed between two walls, grains in a box under a plate, the engines in a triax
 coloured by state for ParaView (ParaView's Python replaced by a stand-in that reads the files with
 Debian's VTK, python3-vtk9, and records the calls)."""
 import importlib.util
-import json
 import os
 import re
 import shutil
@@ -33,7 +32,8 @@ def example(name):
 
 
 def test_every_example_is_tested_and_documented():
-    tested = {'single_grain', 'box_under_plate', 'triaxial_cell', 'read_run_with_pandas', 'paraview_colour_by_state'}
+    tested = {'single_grain', 'box_under_plate', 'triaxial_cell', 'read_run_with_pandas', 'paraview_colour_by_state',
+              'angular_clumps'}
     found = {f[:-3] for f in os.listdir(EXAMPLES) if f.endswith('.py')}
     assert found == tested
     for name in found:
@@ -218,3 +218,24 @@ def test_an_examples_bad_argument_is_refused_before_work(name, arg, words, tmp_p
                        capture_output=True, text=True, timeout=120, env=dict(os.environ, OMP_NUM_THREADS='1'))
     errors = [ln for ln in p.stderr.splitlines() if 'error:' in ln]
     assert p.returncode == 2 and len(errors) == 1 and words in errors[0], p.stderr[-1000:]
+
+
+def test_angular_clump_templates_fill_their_hulls_and_read_as_a_clump_file(tmp_path):
+    """The templates hang together (the clump file's reader accepts them), number as asked, and more spheres fill
+    more of each hull (sharper corners: 8 against 30 spheres, the same hulls from the same seed); a bad argument is
+    refused before any work."""
+    from ballast.templatefile import readTemplates
+    out = {}
+    for n in (8, 30):
+        path = tmp_path / ('shapes%d.csv' % n)
+        r = subprocess.run([sys.executable, os.path.join(EXAMPLES, 'angular_clumps.py'), str(path), '--templates', '3',
+                            '--spheres', str(n), '--seed', '2'], capture_output=True, text=True)
+        assert r.returncode == 0, r.stderr
+        t = readTemplates(str(path))
+        assert [len(radii) for _, _, radii in t] == [n] * 3
+        out[n] = [float(m) / 100 for m in re.findall(r'(\d+) % of its hull filled', r.stdout)]
+        assert len(out[n]) == 3
+    assert all(a < b for a, b in zip(out[8], out[30])), out
+    r = subprocess.run([sys.executable, os.path.join(EXAMPLES, 'angular_clumps.py'), str(tmp_path / 'x.csv'),
+                        '--flatness', '0'], capture_output=True, text=True)
+    assert r.returncode == 2 and '--flatness 0.0: expected in (0, 1]' in r.stderr

@@ -209,3 +209,19 @@ def test_a_clump_file_is_read_when_checked_and_keys_the_sample_by_its_content(na
     copy = tmp_path / 'elsewhere.csv'
     copy.write_bytes(good.read_bytes())
     assert grainKey(check(name, grain='clump', clumpFile=str(copy))) == key   # the content, not the path
+
+
+def test_a_clump_file_is_checked_without_yade(tmp_path):
+    """The study runner checks a table's rows in plain Python: checking a clumpFile reads it without importing YADE
+    (before, reading it through the grain kinds' package imported yade and failed there)."""
+    import subprocess
+    import sys
+    import ballast
+    f = tmp_path / 'shapes.csv'
+    f.write_text('template,x,y,z,r\n1,0,0,0,1\n1,1.2,0,0,1\n')
+    code = ('import sys; from ballast.experiments import declaration; '
+            "c = declaration('box').check({'grain': 'clump', 'clumpFile': %r}); "
+            "print(c['clumpFile'], 'yade' in sys.modules)" % str(f))
+    env = dict(os.environ, PYTHONPATH=os.path.dirname(os.path.dirname(ballast.__file__)))
+    r = subprocess.run([sys.executable, '-c', code], capture_output=True, text=True, env=env)
+    assert r.returncode == 0 and r.stdout.split() == [str(f), 'False'], r.stderr[-1500:]

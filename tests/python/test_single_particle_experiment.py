@@ -183,7 +183,8 @@ def test_a_clump_from_a_template_file_lies_flat_and_crushes_at_its_closed_form(t
     import numpy as np
     from yade import O, Quaternion, Vector3
     from ballast.experiments.clumpsample import ClumpSample
-    from ballast.grainkinds.clumpshapes import principalTemplate, readTemplates
+    from ballast.grainkinds.clumpshapes import principalTemplate
+    from ballast.templatefile import readTemplates
     turn = Quaternion(Vector3(1, 2, 3).normalized(), 0.7)
     corners = [turn * Vector3(1.2 * math.cos(a), 1.2 * math.sin(a), 0) / math.sqrt(3) for a in (0, 2.094395, 4.188790)]
     f = tmp_path / 'triangle.csv'

@@ -19,7 +19,8 @@ from yade import O, Quaternion, Vector3, utils
 
 from .. import runtime
 from ..grainkinds import clump
-from ..grainkinds.clumpshapes import clumpMembers, principalTemplate, readTemplates
+from ..grainkinds.clumpshapes import clumpMembers, principalTemplate
+from ..templatefile import readTemplates
 from .scene import GRAIN_MASK
 
 ROW = 9   # a stored grain: template, q (w, x, y, z), c (x, y, z) [m], r [m]

@@ -315,7 +315,7 @@ class ExperimentParameters(Parameters):
 
     def checkClumpFile(self):
         """clumpFile there and its templates readable (clumpshapes.readTemplates names the line of a fault)."""
-        from ..grainkinds.clumpshapes import readTemplates
+        from ..templatefile import readTemplates
         if not os.path.isfile(self['clumpFile']):
             self.bad('clumpFile', 'no such file')
         try:

@@ -22,14 +22,16 @@ published measurement of railway ballast's axis ratios was found in the sources 
 definitions (Ei = b/a, Fi = c/b, a >= b >= c) are those of e.g. the SHPSG shape generator
 (github.com/budizhao/SHPSG). Replace the defaults with measured ones when they are at hand.
 
-Templates can also come from a CSV file (:func:`readTemplates`, the experiments' ``clumpFile``), each put in its
-principal frame at r_eq = 1 (:func:`principalTemplate`), for shapes the descriptors do not give.
+Templates can also come from a CSV file (:func:`ballast.templatefile.readTemplates`, the experiments'
+``clumpFile``), each put in its principal frame at r_eq = 1 (:func:`principalTemplate`), for shapes the descriptors
+do not give.
 """
 import math
 
 import numpy as np
 
 from ..grainparams import CLUMP_SHAPE, MAX_SPHERES, MIN_SPHERES
+from ..templatefile import connected
 
 # the defaults are the experiments' declarations (ballast.grainparams), declared once
 ELONGATION = CLUMP_SHAPE['clumpElongation'].default
@@ -184,19 +186,6 @@ def _overlapsAny(x, r, centres, radii):
     return bool(np.any(d < np.asarray(radii) + r))
 
 
-def _connected(c, r):
-    """Whether the overlap graph of the spheres is connected (every member touches the clump)."""
-    seen, todo = {0}, [0]
-    while todo:
-        i = todo.pop()
-        d = np.linalg.norm(c - c[i], axis=1)
-        for j in np.nonzero(d < r + r[i])[0].tolist():
-            if j not in seen:
-                seen.add(j)
-                todo.append(j)
-    return len(seen) == len(c)
-
-
 def clumpMembers(rEq, elongation=ELONGATION, flatness=FLATNESS, n=N_SPHERES, seed=0, samples=SAMPLES):
     """Members of a clump in its own frame (long axis x, short z), scaled to the equivalent radius rEq [m].
     Returns (centres (n, 3) [m] relative to the union's bounding-box centre, radii (n,) [m], V [m^3] the
@@ -211,7 +200,7 @@ def clumpMembers(rEq, elongation=ELONGATION, flatness=FLATNESS, n=N_SPHERES, see
     S = flatness * I
     c = [(0.0, 0.0, 0.0), (L - S, 0.0, 0.0), (S - L, 0.0, 0.0), (0.0, I - S, 0.0), (0.0, S - I, 0.0)]
     r = [S] * 5
-    if not _connected(np.array(c), np.array(r)):
+    if not connected(np.array(c), np.array(r)):
         raise ValueError('elongation, flatness: %r, %r give a grain too long for its thickness (L > 3 S: the tips '
                          'do not touch the core); expected elongation * flatness > 1/3' % (elongation, flatness))
     rng = np.random.default_rng(seed)
@@ -237,46 +226,6 @@ def principalExtents(centres, radii):
     r = np.asarray(radii, dtype=float)[:, None]
     return (c + r).max(axis=0) - (c - r).min(axis=0)
 
-
-TEMPLATE_COLUMNS = ('template', 'x', 'y', 'z', 'r')
-
-
-def readTemplates(path):
-    """The clump templates of a CSV file, a row a member sphere: columns template (a name or number), x, y, z (its
-    centre) and r (its radius), in any one length unit. Returns [(name, centres (n, 3), radii (n,))] in the order the
-    templates first appear. ValueError saying what is wrong, with the file's line where a row is: unreadable, a
-    column missing, x, y, z or r not a finite number, r <= 0, more than MAX_SPHERES spheres, or spheres that do not
-    all hang together (their overlap graph is not connected: a clump is one body)."""
-    import pandas as pd
-    try:
-        f = pd.read_csv(path)
-    except (OSError, ValueError, pd.errors.ParserError) as e:   # EmptyDataError is a ValueError
-        raise ValueError('not readable as CSV (%s)' % e) from None
-    missing = [c for c in TEMPLATE_COLUMNS if c not in f.columns]
-    if missing:
-        raise ValueError('no column %s; expected the columns %s' % (', '.join(missing), ', '.join(TEMPLATE_COLUMNS)))
-    if not len(f):
-        raise ValueError('no rows: expected a row per member sphere')
-    xyzr = f[list(TEMPLATE_COLUMNS[1:])].apply(pd.to_numeric, errors='coerce').to_numpy(float)
-
-    def line(i):   # the file's line of row i: the header is line 1
-        return int(i) + 2
-    bad = np.flatnonzero(~np.all(np.isfinite(xyzr), axis=1))
-    if len(bad):
-        raise ValueError('line %d: x, y, z and r must be finite numbers' % line(bad[0]))
-    bad = np.flatnonzero(xyzr[:, 3] <= 0)
-    if len(bad):
-        raise ValueError('line %d: r = %g must be > 0' % (line(bad[0]), xyzr[bad[0], 3]))
-    out = []
-    for name, rows in f.groupby('template', sort=False).indices.items():
-        c, r = xyzr[rows, :3], xyzr[rows, 3]
-        if len(r) > MAX_SPHERES:
-            raise ValueError('template %s: %d spheres, more than %d' % (name, len(r), MAX_SPHERES))
-        if not _connected(c, r):
-            raise ValueError('template %s (lines %d-%d): its spheres do not all overlap into one body' % (
-                name, line(rows.min()), line(rows.max())))
-        out.append((name, c, r))
-    return out
 
 
 def principalTemplate(centres, radii, samples=SAMPLES, seed=0):
