@@ -204,3 +204,18 @@ def test_a_clump_from_a_template_file_lies_flat_and_crushes_at_its_closed_form(t
     V = 4 / 3 * math.pi * 0.015 ** 3
     assert t.expectedForce[0] == pytest.approx(3e5 / 0.015 ** 0.5 * V / h, rel=1e-9)
     assert t.force[0] == pytest.approx(t.expectedForce[0], rel=0.03) and s['nCrushed'] == 1
+    assert s['nUnloaded'] == 0 and s['warnings'] == []
+
+
+def test_grains_that_never_carried_load_are_counted_and_said():
+    """A grain not crushed whose top-platen force stayed below a tenth of its closed-form force (it slid or tipped out
+    from between the platens) is counted; one that carried load without crushing (maxStrain) or crushed is not."""
+    from types import SimpleNamespace
+    from ballast.experiments.single_particle import outputs
+    s = pd.DataFrame({'grain': [0, 1, 2, 3], 'crushed': [False, False, True, False],
+                      'expectedForce': [1000.0, 1000.0, 1000.0, 1000.0]})
+    curves = [(0, 0.1, 0.0, 50.0), (0, 0.2, 0.0, 99.0),      # at most 9.9 %: unloaded
+              (1, 0.1, 0.0, 20.0), (1, 0.2, 0.0, 400.0),     # 40 %: it carried load (stopped at maxStrain)
+              (2, 0.1, 0.0, 1.0)]                            # crushed: not counted whatever its curve
+    exp = SimpleNamespace(tester=SimpleNamespace(curves=curves))   # grain 3: no curve at all, never touched
+    assert outputs.unloadedGrains(exp, s) == [0, 3]

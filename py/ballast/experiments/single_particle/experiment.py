@@ -286,6 +286,8 @@ class SingleParticle(Experiment):
         spread = ('F/d^2 %.3g-%.3g MPa' % (s['forceOverD2Min'] / 1e6, s['forceOverD2Max'] / 1e6) if s['nCrushed']
                   else 'none crushed by maxStrain')
         self.say('done: %d of %d grains crushed, %s; results in %s' % (s['nCrushed'], s['n'], spread, self.out))
+        if s['nUnloaded']:
+            self.say('warning: ' + s['warnings'][-1])
         return s
 
     def writeOutputs(self):

@@ -13,6 +13,8 @@ import pandas as pd
 from ...runfiles import plainLogTicks, saveFigure, strictJson, writeAtomic
 from . import strengths
 
+UNLOADED = 0.1   # [-] a grain not crushed whose force never passed this share of its closed-form force carried no load
+
 STRENGTH_COLUMNS = ['grain', 'diameter', 'sizeClass', 'crushed', 'force', 'forceBottom', 'displacement',
                     'forceOverD2', 'criterionStress', 'strength', 'expectedForce', 'time']
 
@@ -62,12 +64,28 @@ def summary(exp, s=None):
     except ValueError as e:
         out['sizeLawForceOverD2'] = out['sizeLawCriterion'] = None
         out['sizeLawNote'] = str(e)
+    unloaded = unloadedGrains(exp, s)
+    out['nUnloaded'] = len(unloaded)
+    out['warnings'] = exp.warnings() + ([
+        '%d grain(s) not crushed never carried %g of the force their strength crushes them at (grains %s): they '
+        'slid or tipped out from between the platens (a shape with no flat side does), so their strengths are not '
+        'measured' % (len(unloaded), UNLOADED, ', '.join(map(str, unloaded[:10])) + (' ...' if len(unloaded) > 10
+                                                                                    else ''))] if unloaded else [])
     if p['weibullModulus'] == 0 and len(c):  # every grain at its characteristic strength: the closed form
         out['closedFormErrorMax'] = float(np.max(np.abs(c.force / c.expectedForce - 1)))
     out.update({'steps': int(sum(exp.phases.steps.values())), 'wallSeconds': wall, 'cpuSeconds': cpu,
                 'cpuSecondsPerGrain': cpu / max(len(s), 1), 'params': dict(p),
                 'created': time.strftime('%Y-%m-%dT%H:%M:%S')})
     return out
+
+
+def unloadedGrains(exp, s):
+    """The grains of the strengths table s that did not crush and whose force on the top platen over their whole
+    curve stayed below UNLOADED of their closed-form force (expectedForce): they carried no load."""
+    curves = pd.DataFrame(exp.tester.curves, columns=['grain', 'time', 'displacement', 'force'])
+    peak = curves.groupby('grain').force.max()
+    top = peak.reindex(s.grain).fillna(0.0).to_numpy()
+    return [int(g) for g in s.grain[(~s.crushed.to_numpy(bool)) & (top < UNLOADED * s.expectedForce.to_numpy())]]
 
 
 def write(exp, summary, s):
