@@ -12,7 +12,7 @@ def readTemplates(path):
     """The clump templates of a CSV file, a row a member sphere: columns template (a name or number), x, y, z (its
     centre) and r (its radius), in any one length unit. Returns [(name, centres (n, 3), radii (n,))] in the order the
     templates first appear. ValueError saying what is wrong, with the file's line where a row is: unreadable, a
-    column missing, x, y, z or r not a finite number, r <= 0, more than MAX_SPHERES spheres, or spheres that do not
+    column missing, a row without a template, x, y, z or r not a finite number, r <= 0, more than MAX_SPHERES spheres, or spheres that do not
     all hang together (their overlap graph is not connected: a clump is one body)."""
     import pandas as pd
     try:
@@ -28,6 +28,10 @@ def readTemplates(path):
 
     def line(i):   # the file's line of row i: the header is line 1
         return int(i) + 2
+
+    bad = np.flatnonzero(f['template'].isna().to_numpy())   # groupby would drop such rows without a word
+    if len(bad):
+        raise ValueError('line %d: no template' % line(bad[0]))
     bad = np.flatnonzero(~np.all(np.isfinite(xyzr), axis=1))
     if len(bad):
         raise ValueError('line %d: x, y, z and r must be finite numbers' % line(bad[0]))

@@ -110,6 +110,7 @@ def test_templates_read_from_a_file_in_their_order(tmp_path):
     ([(1, 0, 0, 0, 1)], 'template,x,y,r', 'no column z'),
     ([(1, 0, 0, 0, 1), (1, 0, 'a', 0, 1)], 'template,x,y,z,r', 'line 3: x, y, z and r must be finite numbers'),
     ([(1, 0, 0, 0, 1), (1, 0, 0, 0, 0)], 'template,x,y,z,r', 'line 3: r = 0 must be > 0'),
+    ([(1, 0, 0, 0, 1), ('', 1, 0, 0, 1)], 'template,x,y,z,r', 'line 3: no template'),
     ([(7, 0, 0, 0, 1), (7, 2.5, 0, 0, 1)], 'template,x,y,z,r',
      'template 7 (lines 2-3): its spheres do not all overlap'),
 ])

@@ -227,7 +227,6 @@ def principalExtents(centres, radii):
     return (c + r).max(axis=0) - (c - r).min(axis=0)
 
 
-
 def principalTemplate(centres, radii, samples=SAMPLES, seed=0):
     """A template as clumpMembers builds them: turned to its principal axes (the largest second moment of its spheres'
     volumes about their centroid along x, the smallest along z, so a grain laid flat lies on its flat side), centred
