@@ -50,16 +50,13 @@ class ClumpSample:
     def build(cls, p):
         """clumpTemplates shapes from p's seed and clump parameters, or with clumpFile that file's templates (each in
         its principal frame at r_eq = 1), registered with the scene."""
-        t = []
         if p.get('clumpFile'):
-            for j, (_, c0, r0) in enumerate(readTemplates(p['clumpFile'])):
-                c, r, v, _ = principalTemplate(c0, r0, seed=[p['seed'], j])
-                t.append((c, r, v))
-        for j in range(0 if t else p['clumpTemplates']):
-            c, r, v, _ = clumpMembers(1.0, elongation=p['clumpElongation'], flatness=p['clumpFlatness'],
-                                      n=p['clumpSpheres'], seed=[p['seed'], j])
-            t.append((c, r, v))
-        obj = cls(t)
+            shapes = [principalTemplate(c0, r0, seed=[p['seed'], j])
+                      for j, (_, c0, r0) in enumerate(readTemplates(p['clumpFile']))]
+        else:
+            shapes = [clumpMembers(1.0, elongation=p['clumpElongation'], flatness=p['clumpFlatness'],
+                                   n=p['clumpSpheres'], seed=[p['seed'], j]) for j in range(p['clumpTemplates'])]
+        obj = cls([(c, r, v) for c, r, v, _ in shapes])
         runtime.register(obj)
         return obj
 
