@@ -2,6 +2,7 @@
 ids as yade-batch gives them (YADE's own TableParamReader reads them), what is refused and how the
 refusal names line, column and value; yade-batch's --lines."""
 import os
+import re
 import subprocess
 import sys
 
@@ -212,5 +213,15 @@ def test_every_study_table_of_the_repository_passes_its_experiments_check(path):
     text = open(full).read()
     named = {l.split('--experiment')[1].split()[0] for l in text.splitlines() if l.startswith('#') and '--experiment' in l}
     assert len(named) <= 1, named
-    params = Table(full).check(declaration(named.pop() if named else 'oedometer'))
+    root = os.path.dirname(full)
+    for state in set(re.findall(r"'(\.\./results/studies/[^']+)'", text)):
+        if not os.path.isfile(os.path.join(root, state)):
+            # a state too large for git, made on this machine by a run of another table: that row must exist; the
+            # rest of the row is checked without it (a fresh clone runs that row first, as the table says)
+            study, run = re.fullmatch(r'\.\./results/studies/([^/]+)/runs/([^/]+)/state-end\.yade\.gz', state).groups()
+            maker = os.path.join(root, study + '.table')
+            assert os.path.isfile(maker) and run in Table(maker).ids.values(), (state, maker)
+            assert '%s.table' % study in text, 'the table must say which row makes %s' % state
+            text = text.replace("'%s'" % state, "''")
+    params = Table(full, text=text).check(declaration(named.pop() if named else 'oedometer'))
     assert params and all(p['seed'] >= 1 for p in params.values())
