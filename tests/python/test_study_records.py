@@ -165,6 +165,24 @@ def test_an_experiment_that_names_its_record_files_gets_them_whole(tmp_path):
         assert (tmp_path / 'rec' / name).read_text() == files[name], name
 
 
+def test_a_file_too_large_for_git_stays_in_the_run_and_the_record_names_it(tmp_path, monkeypatch):
+    """A clump specimen's end state (3.7 MB) is not committed: the record keeps the files under the limit, and
+    record.json names the one left out with its size and SHA-1 (hashlib's of its bytes) and the run's folder."""
+    import hashlib
+    from ballast.study import records
+    monkeypatch.setattr(records, 'MAX_RECORD_FILE', 100)
+    run = tmp_path / 'triax'
+    run.mkdir()
+    big = bytes(range(256)) * 2   # 512 bytes > 100
+    (run / 'summary.json').write_text(json.dumps({'params': {'seed': 1}}))
+    (run / 'state-end.yade.gz').write_bytes(big)
+    (run / 'cycles.csv').write_text('cycle\n' + '1\n' * 40)   # 86 bytes: kept
+    dest = writeRecord(str(run), str(tmp_path / 'rec'), 'triaxial')
+    assert sorted(os.listdir(dest)) == ['cycles.csv', 'record.json', 'summary.json']
+    left = json.load(open(os.path.join(dest, 'record.json')))['leftOut']
+    assert left == {'state-end.yade.gz': {'bytes': 512, 'sha1': hashlib.sha1(big).hexdigest(), 'run': str(run)}}
+
+
 @pytest.fixture
 def setup(tmp_path):
     (tmp_path / 'tiny.table').write_text(TABLE)

@@ -18,7 +18,8 @@ full one:
         crushes.csv         per crush (events.csv): t [s], the grain's radius [m] and its ratio, the
                             criterion's stress over the strength it crushed at [-]
         record.json         what was left out: rows of fd.csv and checks.csv, the largest stress ratio
-                            of all checks
+                            of all checks; files over MAX_RECORD_FILE bytes (leftOut: size, SHA-1 and
+                            the run's folder, where the file stays)
         psd.csv, cycles.csv, jumps.csv   copied if the run wrote them
 
 The study runner skips a row whose record exists (the same test as for a finished run: its
@@ -36,12 +37,15 @@ import numpy as np
 
 from ..runfiles import column
 from .data import Run
-from ..runfiles import moveSynced, readSummary, writeAtomic
+from ..runfiles import moveSynced, readSummary, sha1, writeAtomic
 from .options import experimentDeclaration
 
 MAX_FD_ROWS = 600          # rows of a recorded F-delta curve [-]: ~40 kB, enough for the paper's figures
 MAX_CHECK_ROWS = 400       # rows of a recorded per-check log [-]
 COPIED = ('summary.json', 'row.json', 'psd.csv', 'cycles.csv', 'jumps.csv')
+# a file larger than this [bytes] stays in the run's folder, named in record.json's leftOut with its size and SHA-1
+# (records are committed; a box's end state is 1.1-1.2 MB, a clump triaxial specimen's 3.7 MB)
+MAX_RECORD_FILE = 1500000
 # the thinning keeps every step of these to its resolution; F, the grains' force on the plate, saws at
 # the plate's impacts and is recorded at the rows kept (its peak is in summary.json)
 FD_QUANTITIES = ('delta', 'Fapplied')
@@ -139,8 +143,16 @@ def writeRecord(runDir, dest, declaration=None, summaryKeys=None):
     info = {'runId': os.path.basename(os.path.normpath(dest))}
     decl = experimentDeclaration(declaration)
     for name in COPIED if decl.recordFiles is None else decl.recordFiles:
-        if os.path.isfile(os.path.join(runDir, name)):
-            shutil.copyfile(os.path.join(runDir, name), os.path.join(tmp, name))
+        src = os.path.join(runDir, name)
+        if not os.path.isfile(src):
+            continue
+        size = os.path.getsize(src)
+        if size > MAX_RECORD_FILE:   # a clump specimen's end state (3.7 MB): git is no place for it
+            with open(src, 'rb') as fh:
+                info.setdefault('leftOut', {})[name] = {'bytes': size, 'sha1': sha1(fh.read()),
+                                                        'run': os.path.abspath(runDir)}
+        else:
+            shutil.copyfile(src, os.path.join(tmp, name))
     if summaryKeys is not None:
         keep = {k: run.summary[k] for k in summaryKeys if k in run.summary}
         keep['params'] = run.summary['params']
