@@ -91,3 +91,29 @@ def test_the_stored_clumps_are_rebuilt_where_the_store_puts_them(built):
     assert np.array_equal(again[:, 0], rows[:, 0]) and np.array_equal(again[:, 8], rows[:, 8])
     assert np.allclose(again[:, 1:8], rows[:, 1:8], rtol=0, atol=1e-12)
     assert np.allclose(grains.arrays()[1], rows[:, 8], rtol=1e-12, atol=0)
+
+
+def test_a_sample_of_sharp_grains_is_built_of_their_roundness(tmp_path):
+    """clumpRoundness 0.4 (docs/grains.md, "Roundness"): each stored template has its 12 spheres, the tips at 0.4 times
+    the core's radius, the bridges its arms need (crossMembers: 4 at e 0.7, f 0.6), every other member at most 0.4 of
+    the core, and the box's extents e and f exactly; the grains' r_eq are the cloud's radii (1e-12)."""
+    from ballast.clumpcross import crossMembers
+    p = dict(SMALL, clumpRoundness=0.4, clumpSpheres=12)
+    exp = Oedometer(results=str(tmp_path), packingDir=str(tmp_path / 'packings'), **p)
+    exp.prepare()
+    with open(exp.packing.file) as fh:
+        doc = json.load(fh)
+    bridges = len(crossMembers(0.7, 0.6, 0.4)[1]) - 5
+    assert bridges == 4
+    assert len(doc['clumpTemplates']) == 3
+    for t in doc['clumpTemplates']:
+        c, r = np.array(t['centres'], dtype=float), np.array(t['radii'], dtype=float)
+        assert len(r) == 12
+        S = r[0]
+        assert np.allclose(r[1:5], 0.4 * S, rtol=1e-12, atol=0)
+        assert np.all(r[5:5 + bridges] > 0.4 * S) and np.all(r[5 + bridges:] <= 0.4 * S * (1 + 1e-12))
+        ext = (c + r[:, None]).max(axis=0) - (c - r[:, None]).min(axis=0)
+        assert ext[1] / ext[0] == pytest.approx(0.7, rel=1e-12) and ext[2] / ext[1] == pytest.approx(0.6, rel=1e-12)
+    rows = np.array(doc['clumps'], dtype=float)
+    k = grainkinds.current()
+    assert len(rows) > 5 and np.allclose(k.radii(k.ids()), rows[:, 8], rtol=1e-12, atol=0)

@@ -21,13 +21,43 @@ def test_union_volume_of_two_spheres_against_the_lens_formula():
     assert abs(V - exact) < 4 * err              # within 4 standard errors
 
 
-@pytest.mark.parametrize('e, f, n', [(0.7, 0.6, 8), (0.5, 0.8, 5), (1.0, 1.0, 12), (0.9, 0.45, 20)])
-def test_descriptors_held_by_the_member_cloud(e, f, n):
-    c, r, V, err = clumpMembers(0.02, elongation=e, flatness=f, n=n, seed=7)
+@pytest.mark.parametrize('e, f, n, rho', [(0.7, 0.6, 8, 1.0), (0.5, 0.8, 5, 1.0), (1.0, 1.0, 12, 1.0),
+                                         (0.9, 0.45, 20, 1.0), (0.7, 0.6, 8, 0.5), (0.5, 0.5, 12, 1.0),
+                                         (0.7, 0.6, 30, 0.2)])
+def test_descriptors_held_by_the_member_cloud(e, f, n, rho):
+    c, r, V, err = clumpMembers(0.02, elongation=e, flatness=f, n=n, seed=7, roundness=rho)
     assert c.shape == (n, 3) and r.shape == (n,)
     L, I, S = principalExtents(c, r)
-    assert I / L == pytest.approx(e, rel=1e-12)  # exact by construction (tips and core of radius S)
+    assert I / L == pytest.approx(e, rel=1e-12)  # exact by construction (the tips reach L and I, the core S)
     assert S / I == pytest.approx(f, rel=1e-12)
+    assert templatefile.connected(c, r)        # every member touches the clump (bridges where the tips do not)
+    # the roundness bounds every member but the core and the bridges: corners curved at <= rho S
+    s = S / 2   # the core's radius
+    bridges = len(clumpshapes.crossMembers(e, f, rho)[1]) - 5
+    assert r[0] == pytest.approx(s, rel=1e-12)
+    assert np.all(np.delete(r, [0] + list(range(5, 5 + bridges))) <= rho * s * (1 + 1e-12))
+
+
+def test_the_skeleton_of_a_sharp_grain_by_hand():
+    # e 0.7, f 0.6, roundness 0.5: S = 0.42, tips t = 0.21 at +-0.79 (x) and +-0.49 (y). A long arm: the tip does not
+    # reach the core (0.79 >= 0.42 + 0.21); one bridge halfway, radius (0.42 + 0.21) / 2 = 0.315, overlaps both
+    # (0.395 <= 0.9 (0.42 + 0.315) and 0.9 (0.315 + 0.21) = 0.4725). A short arm: 0.49 < 0.63, no bridge
+    c, r = clumpshapes.crossMembers(0.7, 0.6, 0.5)
+    np.testing.assert_allclose(r, [0.42, 0.21, 0.21, 0.21, 0.21, 0.315, 0.315], rtol=1e-12)
+    np.testing.assert_allclose(c, [[0, 0, 0], [0.79, 0, 0], [-0.79, 0, 0], [0, 0.49, 0], [0, -0.49, 0],
+                                   [0.395, 0, 0], [-0.395, 0, 0]], atol=1e-12)
+    # at roundness 1 and e f > 1/3 the skeleton is the core and the tips of radius S, as before the roundness
+    c, r = clumpshapes.crossMembers(0.7, 0.6, 1.0)
+    np.testing.assert_allclose(r, [0.42] * 5, rtol=1e-12)
+    # a long thin arm (e 0.5, f 0.5, roundness 0.2): the tip at 1 - 0.05 = 0.95 from the core (S 0.25, t 0.05); k
+    # bridges at spacing 0.95 / (k + 1), the thinnest pair (the last bridge, 0.25 - 0.2 k / (k + 1), and the tip)
+    # overlapping by a tenth: k = 7 gives 0.11875 > 0.9 x 0.125 = 0.1125, k = 8 gives 0.10556 <= 0.9 x 0.12222 = 0.11
+    k = 8
+    c, r = clumpshapes.crossMembers(0.5, 0.5, 0.2)
+    long = np.flatnonzero((np.abs(c[:, 1]) < 1e-15) & (c[:, 0] >= 0))   # the core, the +x tip and its bridges
+    assert len(long) == 2 + k
+    d = np.sort(c[long, 0])
+    assert np.allclose(np.diff(d), 0.95 / (k + 1), rtol=1e-12)
 
 
 def test_equivalent_radius_of_the_union_within_its_stated_error():
@@ -50,7 +80,9 @@ def test_deterministic_for_a_seed_and_different_across_seeds():
 
 @pytest.mark.parametrize('kw, name', [({'rEq': -1.0}, 'rEq'), ({'elongation': 0.0}, 'elongation'),
                                       ({'flatness': 1.5}, 'flatness'), ({'n': 4}, 'n'), ({'n': 6.0}, 'n'),
-                                      ({'elongation': 0.5, 'flatness': 0.5}, 'elongation, flatness')])
+                                      ({'roundness': 0.0}, 'roundness'), ({'roundness': 1.01}, 'roundness'),
+                                      # 0.5 x 0.5 < 1/3: each long arm needs a bridge, 7 members
+                                      ({'elongation': 0.5, 'flatness': 0.5, 'n': 6}, 'n')])
 def test_bad_inputs_are_named(kw, name):
     args = dict(rEq=0.02)
     args.update(kw)

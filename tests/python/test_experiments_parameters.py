@@ -139,8 +139,11 @@ ALL = NAMES + ('triaxial',)
     ({'grain': 'clump', 'clumpFlatness': 1.2}, 'clumpFlatness', 'a number in (0, 1]'),
     ({'grain': 'clump', 'clumpSpheres': 4}, 'clumpSpheres', 'an integer in [5, 200]'),
     ({'grain': 'clump', 'clumpTemplates': 0}, 'clumpTemplates', 'an integer in [1, 1000]'),
-    # 0.5 x 0.6 = 0.3 <= 1/3: the tips (at L - S from the core, radius S) do not reach the core
-    ({'grain': 'clump', 'clumpElongation': 0.5}, 'clumpFlatness', 'clumpElongation clumpFlatness must exceed 1/3'),
+    # 0.5 x 0.5 = 0.25 <= 1/3: the long tips (at L - S from the core, radius S) do not reach the core, a bridge each
+    ({'grain': 'clump', 'clumpElongation': 0.5, 'clumpFlatness': 0.5, 'clumpSpheres': 6}, 'clumpSpheres',
+     'the 2 bridges of their arms at clumpElongation = 0.5, clumpFlatness = 0.5, clumpRoundness = 1: give at least 7'),
+    ({'grain': 'clump', 'clumpRoundness': 0.0}, 'clumpRoundness', 'a number in (0, 1]'),
+    ({'clumpRoundness': 0.5}, 'clumpRoundness', "is used only with grain = 'clump' (got grain = 'sphere')"),
     ({'clumpSpheres': 12}, 'clumpSpheres', "is used only with grain = 'clump' (got grain = 'sphere')"),
     ({'clumpFile': 'shapes.csv'}, 'clumpFile', "is used only with grain = 'clump' (got grain = 'sphere')"),
     ({'grain': 'clump', 'clumpFile': '/nonexistent/shapes.csv'}, 'clumpFile', 'no such file'),
@@ -178,12 +181,14 @@ def test_sphere_samples_keep_their_store_keys_and_a_clump_sample_has_its_own():
         assert keyOf(p) == _oldKey({k: p[k] for k in names}, version, extra, prefix, 3), prefix
         q = mod.check({'seed': 3, 'grain': 'clump'})
         d, name = keyOf(q)
-        # clumpFile in the key only when given: the clump samples stored before it keep their names
-        assert {k: d[k] for k in GRAIN if k in d} == {'grain': 'clump', 'clumpElongation': 0.7, 'clumpFlatness': 0.6,
-                                                       'clumpSpheres': 8, 'clumpTemplates': 20}
-        assert name == _oldKey({k: q[k] for k in names}, version, dict(extra, **{k: q[k] for k in GRAIN
-                                                                                 if k != 'clumpFile'}), prefix, 3)[1]
+        # clumpFile and clumpRoundness in the key only when given: clump samples stored before them keep their names
+        before = {'grain': 'clump', 'clumpElongation': 0.7, 'clumpFlatness': 0.6, 'clumpSpheres': 8,
+                  'clumpTemplates': 20}
+        assert {k: d[k] for k in GRAIN if k in d} == before
+        assert name == _oldKey({k: q[k] for k in names}, version, dict(extra, **before), prefix, 3)[1]
         assert name != keyOf(p)[1] and name.startswith('%s-seed3-' % prefix)
+        sharp, sharpName = keyOf(mod.check({'seed': 3, 'grain': 'clump', 'clumpRoundness': 0.5}))
+        assert sharp['clumpRoundness'] == 0.5 and sharpName not in (name, keyOf(p)[1])
     # a name stored before this change (the default oedometer's packing, seed 1), held by hand
     assert oed.packingKey(oed.check({}))[1] == _oldKey({k: oed.check({})[k] for k in oed.PACKING_KEYS},
                                                        oed.PACKING_VERSION, {}, 'packing', 1)[1]

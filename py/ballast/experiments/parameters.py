@@ -63,7 +63,8 @@ GRAIN = {
                        '"Templates from a file")', anyText, 'a path to a CSV file, or empty', text),
 }
 GRAIN_SHAPE_KEYS = tuple(k for k in GRAIN if k != 'grain')
-CLUMP_BUILDER_KEYS = ('clumpElongation', 'clumpFlatness', 'clumpSpheres', 'clumpTemplates')   # clumpFile replaces them
+CLUMP_BUILDER_KEYS = ('clumpElongation', 'clumpFlatness', 'clumpRoundness', 'clumpSpheres', 'clumpTemplates')   # clumpFile replaces them
+NEWER_KEYS = ('clumpFile', 'clumpRoundness')   # in a sample's store key only when set (grainKey)
 # the measured cost of polyhedra that makes a box or a triaxial sample of them too slow (bench/bench_grains.py)
 POLYHEDRON_COST = '140 us a grain-step, 363 times the spheres (bench/grains.json), about 30 h of CPU a 300-grain oedometer'
 
@@ -71,11 +72,13 @@ POLYHEDRON_COST = '140 us a grain-step, 363 times the spheres (bench/grains.json
 
 def grainKey(p):
     """What of GRAIN decides a stored sample, for its store key: nothing for the paper's spheres (their stored
-    samples keep their names), else the kind and its shape parameters; a clumpFile by its content (its SHA-1), and
-    only when given (the samples stored before it keep their names)."""
+    samples keep their names), else the kind and its shape parameters; a clumpFile by its content (its SHA-1) and
+    clumpRoundness only when not the default (the samples stored before them keep their names)."""
     if p['grain'] == GRAIN_KIND:
         return {}
-    d = {k: p[k] for k in GRAIN if k != 'clumpFile'}
+    d = {k: p[k] for k in GRAIN if k not in NEWER_KEYS}
+    if p['clumpRoundness'] != GRAIN['clumpRoundness'].default:
+        d['clumpRoundness'] = p['clumpRoundness']
     if p['clumpFile']:
         with open(p['clumpFile'], 'rb') as fh:
             d['clumpFile'] = hashlib.sha1(fh.read()).hexdigest()
@@ -292,8 +295,8 @@ class ExperimentParameters(Parameters):
     )
 
     def checkGrain(self):
-        """The clump parameters only with grain 'clump' (elsewhere a value set would be lost), and a clump whose tips
-        reach its core (clumpshapes: clumpElongation clumpFlatness > 1/3); grain 'polyhedron' only where the
+        """The clump parameters only with grain 'clump' (elsewhere a value set would be lost), and enough spheres for
+        the core, tips and bridges of its shape (clumpshapes.crossMembers); grain 'polyhedron' only where the
         experiment takes it, without the options YADE's polyhedra have no counterpart for."""
         if self['grain'] == 'polyhedron':
             if not self.POLYHEDRA:
@@ -309,9 +312,13 @@ class ExperimentParameters(Parameters):
             self.refuseUnlessDefault(CLUMP_BUILDER_KEYS, 'the templates of clumpFile = %r replace it (leave it out, or '
                                                          'leave clumpFile out)' % self['clumpFile'])
             self.checkClumpFile()
-        elif self['clumpElongation'] * self['clumpFlatness'] <= 1 / 3:
-            self.bad('clumpFlatness', 'with clumpElongation = %g the grain\'s tips do not reach its core: '
-                     'clumpElongation clumpFlatness must exceed 1/3' % self['clumpElongation'])
+        else:
+            from ..clumpcross import crossMembers
+            need = len(crossMembers(self['clumpElongation'], self['clumpFlatness'], self['clumpRoundness'])[1])
+            if self['clumpSpheres'] < need:
+                self.bad('clumpSpheres', 'cannot hold the core, the four tips and the %d bridges of their arms at '
+                         'clumpElongation = %g, clumpFlatness = %g, clumpRoundness = %g: give at least %d' % (
+                             need - 5, self['clumpElongation'], self['clumpFlatness'], self['clumpRoundness'], need))
 
     def checkClumpFile(self):
         """clumpFile there and its templates readable (clumpshapes.readTemplates names the line of a fault)."""

@@ -30,8 +30,8 @@ from yade.wrapper import Sphere
 from .. import _ballast, contacts, runtime
 from ..geometry import equivalentRadius, sphereVolume
 from . import GrainKind, Replaced, Resized, register
-from .clumpshapes import (ELONGATION, FLATNESS, N_SPHERES, absorbEmpty, clumpMembers, containers, crossPairs,
-                          pieceShares)
+from .clumpshapes import (ELONGATION, FLATNESS, N_SPHERES, ROUNDNESS, absorbEmpty, clumpMembers, containers,
+                          crossPairs, pieceShares)
 from .sphere import SphereKind
 from .clumpshapes import shellOutside
 
@@ -72,12 +72,12 @@ def _store(create=False):
 
 
 def addClump(centre, rEq, material, orientation=None, elongation=ELONGATION, flatness=FLATNESS, n=N_SPHERES,
-             seed=0, color=None, mask=None, discretization=DISCRETIZATION):
+             seed=0, color=None, mask=None, discretization=DISCRETIZATION, roundness=ROUNDNESS):
     """Append a clump grain of equivalent radius rEq [m] (union volume 4/3 pi rEq^3) at centre [m], its
     frame turned by orientation (a Quaternion; the long axis along the clump frame's x), members of
-    material from clumpshapes.clumpMembers(rEq, elongation, flatness, n, seed). Returns the clump's id;
+    material from clumpshapes.clumpMembers(rEq, elongation, flatness, n, seed, roundness). Returns the clump's id;
     its volume is stored with the scene."""
-    c, r, V, _ = clumpMembers(rEq, elongation=elongation, flatness=flatness, n=n, seed=seed)
+    c, r, V, _ = clumpMembers(rEq, elongation=elongation, flatness=flatness, n=n, seed=seed, roundness=roundness)
     q = Quaternion.Identity if orientation is None else orientation
     X = Vector3(*centre)
     kw = {'material': material}

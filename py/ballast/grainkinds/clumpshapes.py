@@ -30,12 +30,10 @@ import math
 
 import numpy as np
 
+from ..clumpcross import ELONGATION, FLATNESS, ROUNDNESS, crossMembers
 from ..grainparams import CLUMP_SHAPE, MAX_SPHERES, MIN_SPHERES
-from ..templatefile import connected
 
 # the defaults are the experiments' declarations (ballast.grainparams), declared once
-ELONGATION = CLUMP_SHAPE['clumpElongation'].default
-FLATNESS = CLUMP_SHAPE['clumpFlatness'].default
 N_SPHERES = CLUMP_SHAPE['clumpSpheres'].default
 SAMPLES = 400000
 SHELL_SAMPLES = 20000   # shellOutside: about 1 % on a worn member's loss for p > 0.3
@@ -186,27 +184,29 @@ def _overlapsAny(x, r, centres, radii):
     return bool(np.any(d < np.asarray(radii) + r))
 
 
-def clumpMembers(rEq, elongation=ELONGATION, flatness=FLATNESS, n=N_SPHERES, seed=0, samples=SAMPLES):
+def clumpMembers(rEq, elongation=ELONGATION, flatness=FLATNESS, n=N_SPHERES, seed=0, samples=SAMPLES,
+                 roundness=ROUNDNESS):
     """Members of a clump in its own frame (long axis x, short z), scaled to the equivalent radius rEq [m].
     Returns (centres (n, 3) [m] relative to the union's bounding-box centre, radii (n,) [m], V [m^3] the
     union's volume 4/3 pi rEq^3, its Monte Carlo standard error [m^3]). See the module doc."""
     _check('rEq', rEq, np.isscalar(rEq) and math.isfinite(rEq) and rEq > 0, 'a finite radius > 0 [m]')
-    for name, v in (('elongation', elongation), ('flatness', flatness)):
+    for name, v in (('elongation', elongation), ('flatness', flatness), ('roundness', roundness)):
         _check(name, v, np.isscalar(v) and math.isfinite(v) and 0 < v <= 1, 'a ratio in (0, 1]')
     _check('n', n, isinstance(n, (int, np.integer)) and not isinstance(n, bool) and MIN_SPHERES <= n <= MAX_SPHERES,
            'an integer number of spheres in [%d, %d]' % (MIN_SPHERES, MAX_SPHERES))
     L = 1.0
     I = elongation * L
     S = flatness * I
-    c = [(0.0, 0.0, 0.0), (L - S, 0.0, 0.0), (S - L, 0.0, 0.0), (0.0, I - S, 0.0), (0.0, S - I, 0.0)]
-    r = [S] * 5
-    if not connected(np.array(c), np.array(r)):
-        raise ValueError('elongation, flatness: %r, %r give a grain too long for its thickness (L > 3 S: the tips '
-                         'do not touch the core); expected elongation * flatness > 1/3' % (elongation, flatness))
+    c, r = crossMembers(elongation, flatness, roundness)
+    if len(r) > n:
+        raise ValueError('n: %d spheres cannot hold the core, the four tips and the %d bridges of elongation %r, '
+                         'flatness %r, roundness %r; expected n >= %d' % (n, len(r) - 5, elongation, flatness,
+                                                                          roundness, len(r)))
+    c, r = [tuple(x) for x in c.tolist()], r.tolist()
     rng = np.random.default_rng(seed)
     while len(c) < n:
         for _ in range(_TRIES):
-            ri = S * (_RADIUS_SPREAD + (1 - _RADIUS_SPREAD) * rng.random())
+            ri = S * (_RADIUS_SPREAD + (1 - _RADIUS_SPREAD) * rng.random()) * roundness
             x = (rng.random(3) * 2 - 1) * np.array([L - ri, I - ri, S - ri])
             if _overlapsAny(x, ri, c, r):
                 c.append(tuple(x))
