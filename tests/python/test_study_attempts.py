@@ -34,6 +34,11 @@ def test_a_running_runs_progress_is_read_from_the_tail_of_its_newest_log(tmp_pat
     assert attempts.runProgress(str(work), 'r') == '100.0% of loading, ETA 1m'   # line 9 999 (%5.1f)
     (new / 'run.log').write_text('[box 0.2s] prepare  t=0 s  step 0\n')   # no progress line in its tail
     assert attempts.runProgress(str(work), 'r') == ''
+    # a phase that ends on a condition prints no percentage: its own state, not the phase before's stale ETA
+    (new / 'run.log').write_text(
+        '[box 117.7s] deposit  t=1.3948 s  step 219761  dt=6.35e-06 s   98.0% of phase  ETA 1s  unbalanced 0.963\n'
+        '[box 637.9s] settle   t=1.9522 s  step 543227  dt=1.92e-07 s  unbalanced 0.621  v_rms 0.018 m/s\n')
+    assert attempts.runProgress(str(work), 'r') == 'settle: unbalanced 0.621 v_rms 0.018 m/s'
 
 
 def attempt(work, runId, row, state='state-1.gz'):

@@ -28,6 +28,7 @@ def lastError(logPath):
 
 KEEP = 'resume'   # <out>/resume/<run id>/: a killed run's folder and row, to go on from (keepToResume)
 PROGRESS = re.compile(r'(\d+(?:\.\d+)?)% of (\w+)\s+ETA (\S+)')  # a progress line of experiments/phases.py
+PHASE_LINE = re.compile(r'\]\s+(\w+)\s+t=\S+ s\s+step \d+\s+dt=\S+ s([^\n]*)')  # any line of its phases
 
 
 def newestLog(work, runId):
@@ -42,7 +43,8 @@ def newestLog(work, runId):
 
 def runProgress(work, runId):
     """How far the newest attempt of a run in the study's work directory has come, from the last
-    progress line of its run.log ('24.8% of loading, ETA 23m32s'); '' when there is none yet."""
+    phase line of its run.log: '24.8% of loading, ETA 23m32s', or a phase without an end known beforehand with its
+    state ('settle: unbalanced 0.62 v_rms 0.018 m/s'); '' when there is none yet."""
     log = newestLog(work, runId)
     if log is None:
         return ''
@@ -52,8 +54,14 @@ def runProgress(work, runId):
             tail = fh.read().decode('utf-8', 'replace')
     except OSError:  # the attempt ended and its folder went while we looked
         return ''
-    found = PROGRESS.findall(tail)
-    return '%s%% of %s, ETA %s' % found[-1] if found else ''
+    lines = PHASE_LINE.findall(tail)
+    if not lines:
+        return ''
+    phase, rest = lines[-1]
+    found = PROGRESS.search(rest)
+    # a phase that ends on a condition (settling: the unbalanced force) has no ETA: its own line, not the last
+    # phase's stale '98% ... ETA 1s'
+    return '%s%% of %s, ETA %s' % found.groups() if found else '%s: %s' % (phase, ' '.join(rest.split()))
 
 
 def failedLog(path):
