@@ -241,18 +241,24 @@ def stored(exp, folder, key, name, reuse, build, what='sample'):
         return path, json.load(fh), reused
 
 
-def reload(exp, doc, ballast, damping, settleTime=0.01):
-    """The stored grains placed in the scene (whose container and materials the caller has built), the engine
-    chain with the loading damping, the step of eq. 5, and a short settling: contacts re-form with the stored
-    overlaps, only their shear and rolling history is lost."""
-    p = exp.p
-    O.engines = sceneEngines(p, damping)
-    if 'clumps' in doc:   # the scene's kind is the sample's (the key holds grain)
+def placeStored(doc, ballast):
+    """The grains of a stored document placed in the scene, of material ballast, at rest: spheres, clumps (the key
+    holds grain, so the scene's kind is the document's) or polyhedra."""
+    if 'clumps' in doc:
         ClumpSample.fromDocument(doc).rebuild(doc, ballast)
     elif 'polyhedra' in doc:
         polyhedronsample.rebuild(doc, ballast)
     else:
         g = np.array([[float(v) for v in row] for row in doc['grains']]).reshape(-1, 4)
         place(g[:, :3], g[:, 3], ballast)
+
+
+def reload(exp, doc, ballast, damping, settleTime=0.01):
+    """The stored grains placed in the scene (whose container and materials the caller has built), the engine
+    chain with the loading damping, the step of eq. 5, and a short settling: contacts re-form with the stored
+    overlaps, only their shear and rolling history is lost."""
+    p = exp.p
+    O.engines = sceneEngines(p, damping)
+    placeStored(doc, ballast)
     O.dt = p['dtSafety'] * grains.kind().pWaveTimeStep()   # YADE's PWaveTimeStep() but for polyhedra
     exp.phases.run('settle', lambda: grains.unbalanced() < 0.01, tEnd=O.time + settleTime, checkEvery=100)

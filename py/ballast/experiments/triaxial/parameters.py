@@ -39,8 +39,9 @@ PARAMS = {
                         "solidFraction where the grains, deposited with depFriction, lie looser than that and "
                         "layerPressure packs them to it; the porosity reached is reported)", choice('pressure', 'height'),
                         "'pressure' or 'height'", text),
-    'reuseSpecimen': Param(True, '-', 'load the stored specimen of this seed and specimen parameters if there is one',
-                           boolean, '0 or 1', flag),
+    'reuseSpecimen': Param(True, '-', 'load the stored specimen of this seed and specimen parameters if there is '
+                           'one, else, with depFriction 0, its stored layers if a specimen that differs in young or '
+                           'friction only left them (docs/triaxial.md, "Set-up")', boolean, '0 or 1', flag),
     'specimenDir': Param('', 'path', 'where specimens are stored (default <results>/specimens)', anyText, 'a path',
                          text),
     'platenMass': Param(20.0, 'kg', 'mass of the top platen and the loading ram it moves with', positive,
@@ -112,13 +113,24 @@ SPECIMEN_KEYS = ('seed', 'diameter', 'height', 'segments', 'layers', 'solidFract
 SPECIMEN_VERSION = 1
 
 
-def specimenKey(p):
+# what the layers decide before friction and the true modulus are given them (the frictionless, soft deposition and
+# pressing read prepYoung and depFriction): specimens that differ only in these share their layers (layersKey)
+FINISH_KEYS = ('young', 'friction')
+
+
+def specimenKey(p, keys=SPECIMEN_KEYS, prefix='specimen'):
     """(the values that decide the specimen, the file name it is stored under)."""
-    d = dict({k: p[k] for k in SPECIMEN_KEYS}, version=SPECIMEN_VERSION, **grainKey(p))   # sphere ones keep their names
+    d = dict({k: p[k] for k in keys}, version=SPECIMEN_VERSION, **grainKey(p))   # sphere ones keep their names
     if p['compaction'] != 'pressure':   # only then: the specimens stored before the option keep their names
         d['compaction'] = p['compaction']
     h = hashlib.sha1(json.dumps(d, sort_keys=True).encode()).hexdigest()[:10]
-    return d, 'specimen-seed%d-%s.json' % (p['seed'], h)
+    return d, '%s-seed%d-%s.json' % (prefix, p['seed'], h)
+
+
+def layersKey(p):
+    """(the values that decide the specimen's layers as deposited and pressed, before friction and the true modulus;
+    the file name they are stored under)."""
+    return specimenKey(p, tuple(k for k in SPECIMEN_KEYS if k not in FINISH_KEYS), 'layers')
 
 
 class TriaxialParameters(ExperimentParameters):
