@@ -125,6 +125,9 @@ def main(argv=None):
     for study, f in fits.items():
         for rid, n in f['tippedAt'].items():
             print('%s: %s tips from cycle %d (read apart)' % (study, rid, n))
+        if not f['runs']:
+            print('%s: every run read apart (%s): no mean' % (study, ', '.join(f['apart'])))
+            continue
         law = (f['mean'] or {}).get('log')
         print('%s: %d runs to cycle %d%s, settlement %.3f mm after cycle 1, %.3f mm after %d%s' % (
             study, f['runs'], f['cycles'], ' (read apart: %s)' % ', '.join(f['apart']) if f['apart'] else '',

@@ -87,7 +87,7 @@ def dots(ax):
     return [(x, y) for l in ax.get_lines() if l.get_marker() == 'o' for x, y in zip(l.get_xdata(), l.get_ydata())]
 
 
-def test_a_realization_read_apart_is_fitted_and_drawn_but_left_out_of_the_mean(tmp_path, monkeypatch):
+def test_a_realization_read_apart_is_fitted_and_drawn_but_left_out_of_the_mean(tmp_path, monkeypatch, capsys):
     # seeds 1 and 3 settle as 1e-4 (1 + ln N) and 1e-4 (3 + ln N); seed 2's sleeper tips (its centre rises):
     # apart, the mean is 1e-4 (2 + ln N) exactly and seed 2 keeps its own laws
     N = np.arange(1, 9)
@@ -106,8 +106,20 @@ def test_a_realization_read_apart_is_fitted_and_drawn_but_left_out_of_the_mean(t
     assert [list(l.get_ydata()) for l in low.get_lines()] == [pytest.approx(list(-0.1 * N), rel=1e-12)]
     (alone,) = drawn(monkeypatch, settlement.curves([root]), settlement.summary(settlement.curves([root])), tmp_path)
     assert min(min(l.get_ydata()) for l in alone.get_lines()) == pytest.approx(-0.8, rel=1e-9)  # none apart: one panel
-    with pytest.raises(ValueError, match='every run of .* is read apart'):
-        settlement.summary(settlement.curves([root], apart=[1, 2, 3]))
+    # every run apart (a clump box's one tipping sleeper): each fitted and drawn, no mean, and the script still
+    # writes its files (it wrote nothing before)
+    everyApart = settlement.curves([root], apart=[1, 2, 3])
+    f = settlement.summary(everyApart)[root]
+    assert f['runs'] == 0 and f['apart'] == ['s1', 's2', 's3'] and f['mean'] is None and f['cycles'] == 8
+    assert f['settlementFirst'] is None and set(f['perRun']) == {'s1', 's2', 's3'}
+    (one,) = drawn(monkeypatch, everyApart, {root: f}, tmp_path)   # one panel: the three runs, no mean
+    assert len(one.get_lines()) == 3 and not [l for l in one.get_lines() if l.get_linewidth() == 2.2]
+    assert one.get_title() == 'every run read apart: no mean'
+    out = str(tmp_path / 'out')
+    assert boxSettlement()([root, '--apart', '1', '2', '3', '--out', out]) == 0
+    assert sorted(os.listdir(out)) == ['runs.csv', 'settlement.csv', 'settlement.json']   # the figure: caught above
+    assert json.load(open(os.path.join(out, 'settlement.json')))[root]['runs'] == 0
+    assert '%s: every run read apart (s1, s2, s3): no mean' % root in capsys.readouterr().out
 
 
 def test_two_studies_are_compared_seed_by_seed_at_the_cycles_asked(tmp_path, capsys):

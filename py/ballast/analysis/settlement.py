@@ -156,21 +156,24 @@ def total(cycles):
 
 def summary(frame):
     """Per study: the mean and standard deviation of the settlement at every cycle all its runs reached (those read
-    apart left out), the laws fitted to the mean and to each run (those apart too)."""
+    apart left out), the laws fitted to the mean and to each run (those apart too); a study whose every run is read
+    apart has runs 0 and no mean (settlementFirst, settlementLast and mean None, cycles its longest run's)."""
     out = {}
     for study, every in frame.groupby('study', sort=False):
         g = every[~readApart(every)]
-        if g.empty:
-            raise ValueError('summary: every run of %s is read apart; nothing left to average' % study)
+        tipped = every.dropna(subset=['tippedAt']).groupby('runId').tippedAt.first()
+        out[study] = {'runs': int(g.runId.nunique()), 'apart': sorted(set(every.runId) - set(g.runId)),
+                      'tippedAt': {rid: int(n) for rid, n in dict(tipped).items()},
+                      'perRun': {rid: fitLaws(r.cycle, r.settlement) for rid, r in every.groupby('runId') if len(r) >= 3}}
+        if g.empty:   # every run tips (a clump box's one sleeper): drawn and fitted each, no mean
+            out[study].update(cycles=int(every.cycle.max()), settlementFirst=None, settlementLast=None, mean=None)
+            continue
         last = int(g.groupby('runId').cycle.max().min())
         common = g[g.cycle <= last]
         mean = common.groupby('cycle').settlement.agg(['mean', 'std', 'count']).reset_index()
-        tipped = every.dropna(subset=['tippedAt']).groupby('runId').tippedAt.first()
-        out[study] = {'runs': int(g.runId.nunique()), 'apart': sorted(set(every.runId) - set(g.runId)), 'cycles': last,
-                      'tippedAt': {rid: int(n) for rid, n in dict(tipped).items()},
-                      'settlementFirst': float(mean['mean'].iloc[0]), 'settlementLast': float(mean['mean'].iloc[-1]),
-                      'mean': fitLaws(mean.cycle, mean['mean']) if last >= 3 else None,
-                      'perRun': {rid: fitLaws(r.cycle, r.settlement) for rid, r in every.groupby('runId') if len(r) >= 3}}
+        out[study].update(cycles=last, settlementFirst=float(mean['mean'].iloc[0]),
+                          settlementLast=float(mean['mean'].iloc[-1]),
+                          mean=fitLaws(mean.cycle, mean['mean']) if last >= 3 else None)
     return out
 
 
@@ -216,7 +219,8 @@ def figure(frame, fits, path, marks=None):
     """Settlement against log N: every run thin, the mean of each study thick, its logarithmic law dashed.
     The axes fit the data, not the laws (a law that fits badly runs off the panel). Runs read apart (a tipping
     sleeper swings by millimetres) get a panel of their own below, so that the
-    settling runs keep the scale of the top panel; there they are drawn only up to their tipping cycle.
+    settling runs keep the scale of the top panel; there they are drawn only up to their tipping cycle. When every
+    run is read apart, they are drawn on one panel, without a mean.
     `marks` {runId: cycle}: a dot on that run's curve at that cycle, e.g. where most of its grains crushed (the
     mean of runs that collapse at different cycles climbs in steps no run has: the dots say where each did)."""
     import matplotlib
@@ -224,11 +228,12 @@ def figure(frame, fits, path, marks=None):
     import matplotlib.pyplot as plt
     from ..runfiles import plainLogTicks, saveFigure
     apart = readApart(frame)
-    split = bool(apart.any())
+    split = bool(apart.any()) and not apart.all()   # every run apart: one panel of them, no mean
     if split:
         fig, (ax, low) = plt.subplots(2, 1, figsize=(6.6, 6.6), sharex=True, gridspec_kw={'height_ratios': (2, 1)})
     else:
         fig, ax = plt.subplots(figsize=(6.6, 4.4))
+        low = ax
     laws = []
     dotted = False   # the dots' legend entry once
     for k, (study, g) in enumerate(frame.groupby('study', sort=False)):
@@ -239,7 +244,7 @@ def figure(frame, fits, path, marks=None):
                 style = APART_STYLES[f['apart'].index(rid) % len(APART_STYLES)]
                 label = '%s: tips from cycle %d' % (rid, f['tippedAt'][rid]) if rid in f['tippedAt'] else '%s: read apart' % rid
                 low.semilogx(r.cycle, 1e3 * r.settlement, style, color=colour, lw=1, label=label)
-                if rid in f['tippedAt']:  # before it tips it belongs on the top panel's scale
+                if split and rid in f['tippedAt']:  # before it tips it belongs on the top panel's scale
                     level = r[r.cycle < f['tippedAt'][rid]]
                     ax.semilogx(level.cycle, 1e3 * level.settlement, style, color='0.4', lw=0.9)
             else:
@@ -249,6 +254,8 @@ def figure(frame, fits, path, marks=None):
                 (low if rid in f['apart'] else ax).semilogx(at.cycle, 1e3 * at.settlement, 'o', color=colour, ms=5,
                                                             mfc='none', label=None if dotted else 'cycle of most crushes')
                 dotted = True
+        if not f['runs']:
+            continue
         inMean = g[~readApart(g)]
         mean = inMean[inMean.cycle <= f['cycles']].groupby('cycle').settlement.mean()
         ax.semilogx(mean.index, 1e3 * mean.values, '-', color=colour, lw=2.2,
@@ -262,6 +269,9 @@ def figure(frame, fits, path, marks=None):
                     label='a + b ln N: b = %.3g mm, R$^2$ = %.3f' % (1e3 * law['b'], law['r2']))
     ax.set_ylabel('permanent settlement [mm]')
     axes = (ax, low) if split else (ax,)
+    if apart.all():
+        ax.set_title('every run read apart: no mean', fontsize=8)
+        ax.set_ylabel('settlement [mm]')
     if split:
         tipped = any(f['tippedAt'] for f in fits.values())
         ax.set_title('runs in the mean' + ('; grey: the tipping runs before they tip' if tipped else ''), fontsize=8)
