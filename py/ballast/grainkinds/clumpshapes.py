@@ -5,9 +5,11 @@ elongation e = I/L (intermediate over long axis), flatness f = S/I (short over i
 (0, 1]. A clump of n spheres is built in its own frame, long axis x, intermediate y, short z, with
 half-extents (L, I, S) = (1, e, e f) before scaling:
 
-* a core sphere at the origin and four tips at (+-(L - S), 0, 0), (0, +-(I - S), 0), all of radius S, so
-  the member cloud's extents are exactly 2L, 2I, 2S (the descriptors hold exactly for any n >= 5);
-* n - 5 more spheres, radius uniform in [0.6 S, S], centres uniform in the box |x| <= L - r, |y| <= I - r,
+* a core sphere of radius S at the origin and four tips of radius t = rho S (rho the roundness, default 1) at
+  (+-(L - t), 0, 0), (0, +-(I - t), 0), so the member cloud's extents are exactly 2L, 2I, 2S (the descriptors
+  hold exactly for any n), and where a tip does not reach the core the bridges of its arm
+  (:func:`ballast.clumpcross.crossMembers`);
+* the other spheres, radius uniform in [0.6, 1] rho S, centres uniform in the box |x| <= L - r, |y| <= I - r,
   |z| <= S - r and kept only where they overlap a sphere already placed (numpy Generator(seed): the same
   seed gives the same clump);
 * all scaled so the union's volume-equivalent radius is r_eq: (3 V_union / (4 pi))^(1/3) = r_eq.
@@ -17,7 +19,7 @@ seed (:func:`unionVolume`): with N points and a hit fraction p, its relative sta
 sqrt((1 - p)/(p N)); the default N = 400 000 gives about 0.1 % on V, 0.04 % on r_eq. The returned
 volume is the estimate scaled with the clump (V r_eq^3 / r_eq0^3 = 4/3 pi r_eq^3 exactly by construction).
 
-Defaults (choices, stated as such): e = 0.7, f = 0.6, n = 8: a moderately elongated and flat grain. No
+Defaults (choices, stated as such): e = 0.7, f = 0.6, rho = 1, n = 8: a moderately elongated and flat grain. No
 published measurement of railway ballast's axis ratios was found in the sources searched; the descriptor
 definitions (Ei = b/a, Fi = c/b, a >= b >= c) are those of e.g. the SHPSG shape generator
 (github.com/budizhao/SHPSG). Replace the defaults with measured ones when they are at hand.
@@ -37,7 +39,7 @@ from ..grainparams import CLUMP_SHAPE, MAX_SPHERES, MIN_SPHERES
 N_SPHERES = CLUMP_SHAPE['clumpSpheres'].default
 SAMPLES = 400000
 SHELL_SAMPLES = 20000   # shellOutside: about 1 % on a worn member's loss for p > 0.3
-_RADIUS_SPREAD = 0.6      # extra members' radii in [0.6 S, S]
+_RADIUS_SPREAD = 0.6      # extra members' radii in [0.6, 1] rho S
 _TRIES = 10000            # candidate centres per extra member before giving up
 
 
