@@ -8,7 +8,8 @@ docs/box.md, "The study"):
         keep=none]' --at 1 10 100 --apart sg-volume-seed2-c96 --out docs/studies/box-sg
 
 writes settlement.csv (every run's curve), runs.csv (per realization what it broke and cost: crushes, abrasions,
-largest fatigue damage and stress ratio, grains, CPU per cycle and per realization, step, the cycle it tips from),
+largest fatigue damage and stress ratio, grains, CPU per cycle and per realization, step, the largest and the last
+tilt, the cycle it tips from),
 settlement.json (per study: the mean curve's and every run's logarithmic and power laws with R^2) and settlement.png
 (a dot on each run at the cycle most of its grains crushed in); with --reference, all three over the cycles the
 other studies cover, and each other study's runs against the reference's of the same seed at the cycles --at:
@@ -113,10 +114,11 @@ def main(argv=None):
                 'none with one seed' if c['interval95'] is None else '+-%.4f' % (1e3 * c['interval95']),
                 c['meanRatio']))
     for study, r in runs.groupby('study', sort=False):
-        print('%s: crushes %s, abrasions %s, largest fatigue damage %s, largest stress ratio %s, grains %s after cycle '
-              '1 and %s at the end, %s s of CPU a cycle (%s h a realization), step %s s (%s steps a cycle)' % (
+        print('%s: crushes %s, abrasions %s, largest fatigue damage %s, largest stress ratio %s, largest tilt %s rad, '
+              'grains %s after cycle 1 and %s at the end, %s s of CPU a cycle (%s h a realization), step %s s (%s steps '
+              'a cycle)' % (
                   study, span(r.crushes, '%d'), span(r.abrasions, '%d'), span(r.maxDamage, '%.3g'),
-                  span(r.maxStressRatio, '%.3g'),
+                  span(r.maxStressRatio, '%.3g'), span(r.tiltMax, '%.3g'),
                   span(r.grainsCycle1, '%d'), span(r.grainsLast, '%d'), span(r.cpuPerCycle, '%.1f'),
                   span(r.cpuPerRealization / 3600, '%.1f'), span(r.timeStep, '%.3g'),
                   span(r.stepsPerCycle, '%.0f')))

@@ -263,9 +263,11 @@ def test_each_realization_reports_what_it_broke_and_cost_over_all_its_slices(tmp
                               ('s2-c8', [0] * 8, [3] * 8)):
         grains = 10 + 2 * np.cumsum(crushes)
         damage = np.linspace(0, 0.5, 8)
+        tilt = -0.01 * np.sin(np.arange(8))   # |tilt| largest at cycle 6 (n = 5): 0.00959; the last -0.00657
         with open(os.path.join(root, 'runs', rid, 'cycles.csv'), 'w') as fh:
-            fh.write('cycle,settlement,crushes,abrasions,maxDamage,maxStressRatio,nGrains,cpuSeconds\n' + ''.join(
-                '%d,1e-4,%d,0,%r,0.6,%d,%r\n' % (n + 1, crushes[n], damage[n], grains[n], cpu[n]) for n in range(8)))
+            fh.write('cycle,settlement,crushes,abrasions,maxDamage,maxStressRatio,nGrains,cpuSeconds,tilt\n' + ''.join(
+                '%d,1e-4,%d,0,%r,0.6,%d,%r,%r\n' % (n + 1, crushes[n], damage[n], grains[n], cpu[n], tilt[n])
+                for n in range(8)))
         with open(os.path.join(root, 'runs', rid, 'summary.json'), 'w') as fh:
             json.dump({'params': {'seed': int(rid[1]), 'continueFrom': '/x/runs/s1-c4/state-end.yade.gz' if rid == 's1-c8'
                                   else ''}, 'dt': 1e-6, 'stepsPerCycle': 4e4}, fh)
@@ -278,6 +280,8 @@ def test_each_realization_reports_what_it_broke_and_cost_over_all_its_slices(tmp
     assert one.maxDamage == pytest.approx(0.5) and one.timeStep == 1e-6 and r.loc['s2-c8'].crushes == 0
     assert (one.avalancheCycle, one.avalancheCrushes) == (2, 1)   # the first of the two cycles with one crush each
     assert math.isnan(r.loc['s2-c8'].avalancheCycle) and math.isnan(r.loc['s2-c8'].avalancheCrushes)
+    assert one.tiltMax == pytest.approx(0.01 * abs(math.sin(5)), rel=1e-12)
+    assert one.tiltLast == pytest.approx(-0.01 * math.sin(7), rel=1e-12)
     figures = caught(monkeypatch)
     assert boxSettlement()([root, '--out', str(tmp_path / 'out')]) == 0
     assert dots(figures[0].axes[0]) == [(2, pytest.approx(0.1, rel=1e-12))]   # seed 1's cycle of most crushes only
@@ -285,6 +289,7 @@ def test_each_realization_reports_what_it_broke_and_cost_over_all_its_slices(tmp
     assert list(written.runId) == ['s1-c8', 's2-c8'] and 'tippedAt' in written
     said = capsys.readouterr().out
     assert 'crushes 0-2, abrasions 0, largest fatigue damage 0.5' in said and 's1-c8, most crushes in cycle 2 (1)' in said
+    assert 'largest tilt 0.00959 rad' in said
     assert 's2-c8, most crushes' not in said
 
 

@@ -100,7 +100,8 @@ def realizations(paths, by=()):
     abrasions, the largest fatigue damage and stress ratio, the grains after cycle 1 and at the end, and the CPU
     seconds per cycle (over the cycles that have it: a continued slice's first has none) and per realization (that
     mean times its cycles); the cycle in which the most grains crushed (avalancheCycle, the first of equals) and how
-    many (avalancheCrushes), NaN when none crushed: where a bed collapses, the cycle variants move; from its last
+    many (avalancheCrushes), NaN when none crushed: where a bed collapses, the cycle variants move; the sleeper's
+    largest |tilt| and its tilt after the last cycle (tiltMax, tiltLast [rad]: how far it tipped); from its last
     slice's summary.json the step (timeStep, its dt [s]) and the steps per cycle. NaN where the records have no such
     column (records of before a column was written)."""
     rows = []
@@ -116,6 +117,7 @@ def realizations(paths, by=()):
                      'cpuPerCycle': over('cpuSeconds', np.nanmean),
                      'avalancheCycle': math.nan if most is None else int(c['cycle'].iloc[most]),
                      'avalancheCrushes': math.nan if most is None else int(c['crushes'].iloc[most]),
+                     'tiltMax': over('tilt', lambda v: np.max(np.abs(v))), 'tiltLast': over('tilt', lambda v: v[-1]),
                      'timeStep': float(s.get('dt', math.nan)),
                      'stepsPerCycle': float(s.get('stepsPerCycle', math.nan))})
     frame = pd.DataFrame(rows)
