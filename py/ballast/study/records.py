@@ -44,8 +44,8 @@ MAX_FD_ROWS = 600          # rows of a recorded F-delta curve [-]: ~40 kB, enoug
 MAX_CHECK_ROWS = 400       # rows of a recorded per-check log [-]
 COPIED = ('summary.json', 'row.json', 'psd.csv', 'cycles.csv', 'jumps.csv')
 # a file larger than this [bytes] stays in the run's folder, named in record.json's leftOut with its size and SHA-1
-# (records are committed; a box's end state is 1.1-1.2 MB, a clump triaxial specimen's 3.7 MB)
-MAX_RECORD_FILE = 1500000
+# (records are committed; a box's end state is 1.1-1.8 MB, a clump triaxial specimen's 3.7 MB)
+MAX_RECORD_FILE = 2000000
 # the thinning keeps every step of these to its resolution; F, the grains' force on the plate, saws at
 # the plate's impacts and is recorded at the rows kept (its peak is in summary.json)
 FD_QUANTITIES = ('delta', 'Fapplied')
