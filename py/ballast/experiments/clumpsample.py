@@ -19,7 +19,7 @@ from yade import O, Quaternion, Vector3, utils
 
 from .. import runtime
 from ..grainkinds import clump
-from ..grainkinds.clumpshapes import ROUNDNESS, clumpMembers, principalTemplate
+from ..grainkinds.clumpshapes import clumpMembers, principalTemplate
 from ..templatefile import readTemplates
 from .scene import GRAIN_MASK
 
@@ -55,7 +55,7 @@ class ClumpSample:
                       for j, (_, c0, r0) in enumerate(readTemplates(p['clumpFile']))]
         else:
             shapes = [clumpMembers(1.0, elongation=p['clumpElongation'], flatness=p['clumpFlatness'],
-                                   n=p['clumpSpheres'], seed=[p['seed'], j], roundness=p.get('clumpRoundness', ROUNDNESS))
+                                   n=p['clumpSpheres'], seed=[p['seed'], j], roundness=p['clumpRoundness'])
                       for j in range(p['clumpTemplates'])]
         obj = cls([(c, r, v) for c, r, v, _ in shapes])
         runtime.register(obj)

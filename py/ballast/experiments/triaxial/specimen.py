@@ -4,7 +4,6 @@ at layerPressure until it rests, then friction restored and the grains stiffened
 sample store of :mod:`ballast.experiments.sample`) so a seed gives the same specimen. For the test the stored grains
 are placed in the mould again, the top platen laid on them, and the mould is taken off once the membrane holds
 them (:mod:`.membrane`)."""
-import json
 import math
 import os
 
@@ -16,7 +15,7 @@ from ...geometry import sphereVolume
 from .. import grains, preparation, sample
 from ..containers import Cylinder
 from ..scene import STEEL_COLOR, STEEL_MASK, engines, materials, rolling
-from .parameters import FINISH_KEYS, layersKey, specimenKey
+from .parameters import layersKey, specimenKey
 
 PLATE_THICKNESS = 0.02   # [m] the preparation press plate's mass: steel of this thickness over the mould
 MOULD_HEIGHT = 3.0       # [-] the mould's height over the specimen's: a layer's cloud starts up to about twice as high
@@ -106,26 +105,22 @@ def buildSpecimen(exp):
     O.engines = engines(p['prepDamping'], p['law'], rolling(p))
     R = p['diameter'] / 2
     area = math.pi * R ** 2
-    keys, name = layersKey(p)
-    # frictionless layers at rest are their positions (lost: the residual velocities); with depFriction > 0 their
-    # contacts' shear history would be lost too, and the grains slide when it is (a reused specimen's grains moved
-    # 6.9 mm against a fresh build's 3.0 mm): such layers are built every time
-    path = os.path.join(folder(p), name) if p['depFriction'] == 0 else None
-    if path and p['reuseSpecimen'] and os.path.exists(path):
-        with open(path) as fh:
-            doc = json.load(fh)
-        sample.placeStored(doc, ballast)
-        # one step at the soft modulus makes the contacts: the stiffener ramps those it finds, and a contact first made
-        # at the true modulus would push the soft overlaps apart young / prepYoung times harder (a 2 cm kick, measured)
-        O.dt = preparation.PREP_DT_SAFETY * grains.kind().pWaveTimeStep()
-        O.step()
+    if p['depFriction'] == 0:
+        # frictionless layers at rest are their positions (lost: the residual velocities), stored in the sample store;
+        # with depFriction > 0 their contacts' shear history would be lost too, and the grains slide when it is (a
+        # reused specimen's grains moved 6.9 mm against a fresh build's 3.0 mm): such layers are built every time
+        keys, name = layersKey(p)
+        _, doc, reused = sample.stored(exp, folder(p), keys, name, p['reuseSpecimen'],
+                                       lambda: {'top': layers(exp, p, steel, ballast, R, area)}, 'layers')
+        if reused:
+            sample.placeStored(doc, ballast)
+            # one step at the soft modulus makes the contacts: the stiffener ramps those it finds, and a contact first
+            # made at the true modulus would push the soft overlaps apart young / prepYoung times harder (a 2 cm kick)
+            O.dt = preparation.PREP_DT_SAFETY * grains.kind().pWaveTimeStep()
+            O.step()
         top = doc['top']
-        exp.phases.say('layers: reusing %s (the layers of a specimen that differs in %s only)' % (
-            path, ' and '.join(FINISH_KEYS)))
     else:
         top = layers(exp, p, steel, ballast, R, area)
-        if path:
-            sample.store(path, keys, exp, top=top)
     preparation.restoreFriction(ballast, p['friction'], p['steelFriction'])
     preparation.Stiffener().run(exp, [(ballast, p['young']), (steel, p['steelYoungRatio'] * p['young'])],
                                 p['young'] / p['prepYoung'])
