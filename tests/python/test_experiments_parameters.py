@@ -9,7 +9,8 @@ import pytest
 
 from ballast import experiments
 from ballast.experiments.parameters import (CONTACT, CYCLE_JUMP, ENGINES, GRAIN, GRAINS, INTEGRATION, PREPARATION, RUN,
-                                            SEED, STEEL, ExperimentParameters, grainKey)
+                                            SEED, STEEL, ExperimentParameters, grainKey,
+                                            storeName)
 from ballast.params import ParamError
 
 NAMES = ('box', 'oedometer', 'single_particle')
@@ -214,6 +215,19 @@ def test_a_clump_file_is_read_when_checked_and_keys_the_sample_by_its_content(na
     copy = tmp_path / 'elsewhere.csv'
     copy.write_bytes(good.read_bytes())
     assert grainKey(check(name, grain='clump', clumpFile=str(copy))) == key   # the content, not the path
+
+
+def test_a_stored_sample_is_named_by_its_keys_whatever_their_order():
+    """storeName: the keys' SHA-1 over their sorted JSON, so the order a dict was built in changes nothing and any value
+    that decides the sample (a float's last digit, the seed) changes the name."""
+    import hashlib
+    import json
+    keys = {'seed': 1, 'young': 3e9, 'grain': 'clump'}
+    name = storeName('bed', 1, keys)
+    assert name == 'bed-seed1-%s.json' % hashlib.sha1(json.dumps(keys, sort_keys=True).encode()).hexdigest()[:10]
+    assert storeName('bed', 1, dict(reversed(list(keys.items())))) == name
+    assert storeName('bed', 1, dict(keys, young=3.0000000001e9)) != name
+    assert storeName('bed', 2, keys).startswith('bed-seed2-') and storeName('packing', 1, keys).startswith('packing-')
 
 
 def test_a_clump_file_is_checked_without_yade(tmp_path):

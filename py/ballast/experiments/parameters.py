@@ -8,12 +8,13 @@ its --help and docs/parameters.md list them, and may give a declaration another 
 ``.withDefault(...)``; its own parameters it declares in its folder. Needs no YADE: the study runner
 reads it in plain Python.
 """
-import hashlib
+import json
 import math
 import os
 
 from ..engineparams import ABRASION, CRUSH
 from ..grainparams import CLUMP_SHAPE
+from ..runfiles import sha1
 from ..params import (INT32_MAX, NUMBER_NONNEGATIVE, NUMBER_POSITIVE, Param, Parameters, anyText, between, boolean, choice,
                       coreRange, flag, intBetween, nonNegative, positive, positiveInt, text)
 
@@ -81,8 +82,14 @@ def grainKey(p):
         d['clumpRoundness'] = p['clumpRoundness']
     if p['clumpFile']:
         with open(p['clumpFile'], 'rb') as fh:
-            d['clumpFile'] = hashlib.sha1(fh.read()).hexdigest()
+            d['clumpFile'] = sha1(fh.read())
     return d
+
+
+def storeName(prefix, seed, keys):
+    """The file name a prepared sample decided by `keys` (a dict of JSON values) is stored under: the same keys give
+    the same name, any other keys (almost surely) another."""
+    return '%s-seed%d-%s.json' % (prefix, seed, sha1(json.dumps(keys, sort_keys=True))[:10])
 
 
 # the steel of the walls, plates and platens (section 4)

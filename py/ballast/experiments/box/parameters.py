@@ -3,15 +3,13 @@ line (``--name value``) and study tables use these names, units, ranges and defa
 contact law and every crushing, abrasion, strength, fatigue and time-step option are the declarations every
 experiment shares (:mod:`ballast.experiments.parameters`: the same ballast, the same engines); the box's own
 are its geometry, the bed's preparation, the sleeper and the load. Needs no YADE."""
-import hashlib
-import json
 import math
 import os
 
 from ...params import NUMBER_NONNEGATIVE, NUMBER_POSITIVE, Param, anyText, between, boolean, flag, intBetween, nonNegative, \
     positive, positiveInt, text
 from ..parameters import (CONTACT, CONTINUE_FROM, CYCLE_JUMP, ENGINES, GRAIN, GRAINS, INTEGRATION, PHI, PREPARATION,
-                          RUN, SEED, STEEL, CYCLE_OUTPUTS, QUASI_STATIC, ExperimentParameters, grainKey, take)
+                          RUN, SEED, STEEL, CYCLE_OUTPUTS, QUASI_STATIC, ExperimentParameters, grainKey, storeName, take)
 from ..loadhistory import LoadHistory
 
 OWNER = 'BoxTest'
@@ -90,8 +88,7 @@ BED_VERSION = 1
 def bedKey(p):
     """(the values that decide the bed, the file name it is stored under)."""
     d = dict({k: p[k] for k in BED_KEYS}, version=BED_VERSION, **grainKey(p))   # sphere beds keep their names
-    h = hashlib.sha1(json.dumps(d, sort_keys=True).encode()).hexdigest()[:10]
-    return d, 'bed-seed%d-%s.json' % (p['seed'], h)
+    return d, storeName('bed', p['seed'], d)
 
 
 class BoxParameters(ExperimentParameters):

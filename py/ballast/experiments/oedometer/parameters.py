@@ -7,8 +7,6 @@ the grains, the steel, the contact law, the time step and the run are those ever
 
 Needs no YADE: the study runner reads it in plain Python.
 """
-import hashlib
-import json
 import math
 
 from ... import _ballast
@@ -16,7 +14,7 @@ from ...geometry import frictPhysStiffness
 from ...params import NUMBER_NONNEGATIVE, NUMBER_POSITIVE, Param, anyText, between, boolean, choice, flag, intAtLeast, \
     nonNegative, positive, positiveInt, text
 from ..parameters import (CONTACT, CYCLE_JUMP, ENGINES, GRAIN, GRAINS, INTEGRATION, PREPARATION, RUN, SEED, STEEL,
-                          CYCLE_OUTPUTS, MAX_OVERLAP_RATIO, QUASI_STATIC, ExperimentParameters, grainKey, take)
+                          CYCLE_OUTPUTS, MAX_OVERLAP_RATIO, QUASI_STATIC, ExperimentParameters, grainKey, storeName, take)
 from .loadcurve import halfLoadTime, peakTime
 
 OWNER = 'Oedometer'
@@ -177,5 +175,4 @@ def packingKey(p):
             d[k] = p[k]
     d['version'] = PACKING_VERSION
     d.update(grainKey(p))   # nothing for spheres: their stored packings keep their names
-    h = hashlib.sha1(json.dumps(d, sort_keys=True).encode()).hexdigest()[:10]
-    return d, 'packing-seed%d-%s.json' % (p['seed'], h)
+    return d, storeName('packing', p['seed'], d)

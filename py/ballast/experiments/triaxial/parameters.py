@@ -4,15 +4,13 @@ contact law and every crushing, abrasion, strength, fatigue, time-step and cycle
 every experiment shares (:mod:`ballast.experiments.parameters`); the test's own are the specimen, its preparation,
 the membrane and the stresses. Needs no YADE."""
 import functools
-import hashlib
-import json
 import math
 import os
 
 from ...params import NUMBER_NONNEGATIVE, NUMBER_POSITIVE, Param, anyText, between, boolean, choice, flag, intBetween, \
     nonNegative, positive, positiveInt, text
 from ..parameters import (CONTACT, CONTINUE_FROM, CYCLE_JUMP, CYCLE_OUTPUTS, ENGINES, GRAIN, GRAINS, INTEGRATION,
-                          PREPARATION, QUASI_STATIC, RUN, SEED, STEEL, ExperimentParameters, grainKey, take)
+                          PREPARATION, QUASI_STATIC, RUN, SEED, STEEL, ExperimentParameters, grainKey, storeName, take)
 from ..loadhistory import LoadHistory
 from .strains import CurveError, readReference
 
@@ -123,8 +121,7 @@ def specimenKey(p, keys=SPECIMEN_KEYS, prefix='specimen'):
     d = dict({k: p[k] for k in keys}, version=SPECIMEN_VERSION, **grainKey(p))   # sphere ones keep their names
     if p['compaction'] != 'pressure':   # only then: the specimens stored before the option keep their names
         d['compaction'] = p['compaction']
-    h = hashlib.sha1(json.dumps(d, sort_keys=True).encode()).hexdigest()[:10]
-    return d, '%s-seed%d-%s.json' % (prefix, p['seed'], h)
+    return d, storeName(prefix, p['seed'], d)
 
 
 def layersKey(p):
