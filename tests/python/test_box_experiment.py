@@ -16,6 +16,7 @@ pytest.importorskip('yade')
 from ballast.experiments.box import BoxTest  # noqa: E402
 from ballast.experiments.box.zones import ZONES  # noqa: E402
 from ballast.params import ParamError  # noqa: E402
+from yade import O  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
@@ -320,6 +321,11 @@ def test_a_sleeper_that_reaches_the_floor_stops_the_run(tmp_path):
     assert crushes.cycle.max() <= s['stoppedInCycle'] and grading.cycle.iloc[-1] == s['stoppedInCycle']
     # on its way down it left the range a box test is for: said once, in the log and the summary
     assert [w.split()[0] for w in s['warnings']].count('settlement') == 1, s['warnings']
+    # reopened, a run on the floor runs no more cycles (as a failed triaxial specimen): its outputs again, no step
+    again = BoxTest.reopen(os.path.join(test.out, 'state-end.yade.gz'), results=str(tmp_path), runId='again')
+    steps = O.iter
+    s2 = again.load(5)
+    assert O.iter == steps and s2['stoppedBy'] == 'sleeperOnFloor' and s2['cycles'] == s['cycles']
 
 
 def test_a_state_saved_before_the_new_floors_reopens_and_goes_on(tmp_path):

@@ -42,6 +42,7 @@ import pandas as pd
 from yade import O
 
 from .. import runtime
+from ..params import validate
 from ..runfiles import writeAtomic
 from ..settlementlaws import cyclesChanged as changed, settlementJumped
 from . import breakage, chain, grains, timestep
@@ -325,6 +326,82 @@ class RecordedCycles:
     def cyclesDone(self):
         """Cycles done: those simulated (a row each) and those jumped over."""
         return len(self.recorder.cycles) + self.recorder.jumped if self.recorder is not None else 0
+
+    # The lifecycle of load(), the same for both; each says through these hooks what is its own.
+    def cyclingStarted(self):
+        """Whether the load cycles have begun (else load() prepares the sample if need be and starts them)."""
+        raise NotImplementedError
+
+    def prepared(self):
+        """Whether the sample is prepared (built, seated, under its load)."""
+        raise NotImplementedError
+
+    def stopReason(self):
+        """Why the run stops before its target (the box: the sleeper on the floor; the triaxial: the specimen
+        failed), or None."""
+        raise NotImplementedError
+
+    def loadText(self):
+        """The load as load() says it: '<the cycle's load>, dt = ...' follows."""
+        raise NotImplementedError
+
+    def stateText(self):
+        """The state the progress line gives after 'cycle k of n, '."""
+        raise NotImplementedError
+
+    def doneText(self, s):
+        """The end as load() says it, from the summary s: 'done: <this>; results in <folder>'."""
+        raise NotImplementedError
+
+    def atStop(self):
+        """At the stop, before the outputs (the box closes the cycle its sleeper cut short on the floor)."""
+
+    def writeOutputs(self):
+        raise NotImplementedError
+
+    def load(self, cycles=None):
+        """Run `cycles` more load cycles (default the parameter's), then write every output and save the state.
+        Returns the summary."""
+        p = self.p
+        n = p['cycles'] if cycles is None else validate(p.OWNER + '.load', {'cycles': p.PARAMS['cycles']}, 'cycles',
+                                                        cycles)
+        if not self.cyclingStarted():
+            if not self.prepared():
+                self.prepare()
+            self.startCycling()
+        if self.out is None:   # a reopened run writes into a folder of its own
+            self.dir.create()
+            self.markRunning(continues=self.dir.previous, continuesState=self.dir.source)
+            self.say('run %s goes on from %s -> %s' % (self.runId, self.dir.source or self.dir.previous, self.out))
+        if self.stopReason() is not None:
+            self.say('load: no cycles: %s' % self.stopReason())
+            return self.finishRun(self.writeOutputs)
+        self.syncJumping()
+        self.startFrames()
+        self.target = self.cyclesDone() + n
+        return self.goOnToEnd()
+
+    def goOnToEnd(self):
+        """The cycles of the load() under way up to its target (saved with the state: a killed run resumed goes on to
+        it), then every output written and the state saved. Returns the summary."""
+        p, rec, target = self.p, self.recorder, self.target
+        tEnd = rec.t0 + (target - rec.jumped) * rec.period
+        if self.jumper is not None:
+            self.jumper.target = target
+        self.say('load: %d cycle(s) of %s, dt = %.3g s (%.3g steps a cycle)' % (
+            target - self.cyclesDone(), self.loadText(), O.dt, rec.period / O.dt))
+        if self.cyclesDone() < target:   # a run killed after its last cycle: its outputs only
+            self.runUntil(lambda: self.cyclesDone() >= target or self.stopReason() is not None,
+                          tEnd=tEnd + 2 * rec.period / p['samples'], phase='load', checkEvery=50,
+                          simSpan=tEnd - O.time, simStart=O.time,
+                          extra=lambda: 'cycle %d of %d, %s' % (self.cyclesDone(), target, self.stateText()))
+        self.atStop()
+        self.grade(self.cyclesDone())
+        if p['vtk'] > 0:
+            self.frame()   # the last
+        s = self.finishRun(self.writeOutputs)
+        self.say('done: %s; results in %s' % (self.doneText(s), self.out))
+        return s
 
 
 def appendSample(exp, row):

@@ -20,14 +20,14 @@ from yade import O, Vector3, plot, utils
 from yade.wrapper import FrictMat, InterpolatingDirectedForceEngine
 
 from ... import runtime
-from ...params import requireWritableDir, validate
+from ...params import requireWritableDir
 from .. import breakage, chain, grains, preparation, scene
 from ..parameters import CYCLE_JUMP
 from ...settlementlaws import bedChanged
 from ..base import Experiment
 from ..cyclic import Cyclic, RecordedCycles, appendSample
 from . import bed, outputs
-from .parameters import OWNER, PARAMS, BoxParameters
+from .parameters import OWNER, BoxParameters
 from .recorder import LOAD, Recorder
 
 RECORDER, FRAMES = 'boxRecorder', 'boxFrames'
@@ -206,52 +206,35 @@ class BoxTest(RecordedCycles, Cyclic, Experiment):
     def cycleFrame(self):
         return outputs.cycleTable(self)
 
-    def load(self, cycles=None):
-        """Run `cycles` more load cycles (default the parameter's), then write every output and save the
-        state. Returns the summary."""
-        p = self.p
-        n = p['cycles'] if cycles is None else validate(OWNER + '.load', {'cycles': PARAMS['cycles']}, 'cycles', cycles)
-        if self.recorder is None or self.recorder.t0 is None:
-            if self.recorder is None:
-                self.prepare()
-            self.startCycling()
-        if self.out is None:   # a reopened run writes into a folder of its own
-            self.dir.create()
-            self.markRunning(continues=self.dir.previous, continuesState=self.dir.source)
-            self.say('run %s goes on from %s -> %s' % (self.runId, self.dir.source or self.dir.previous, self.out))
-        self.syncJumping()
-        self.startFrames()
-        self.target = self.cyclesDone() + n
-        return self.goOnToEnd()
+    def cyclingStarted(self):
+        return self.recorder is not None and self.recorder.t0 is not None
 
-    def goOnToEnd(self):
-        """The cycles of the load() under way up to its target (saved with the state: a killed run resumed goes on to
-        it), then every output written and the state saved. Returns the summary."""
-        p, rec, target = self.p, self.recorder, self.target
-        tEnd = rec.t0 + (target - rec.jumped) * rec.period
-        if self.jumper is not None:
-            self.jumper.target = target
-        self.say('load: %d cycle(s) of %s, %.4g-%.4g N, %.3g s each, dt = %.3g s (%.3g steps a cycle)' % (
-            target - self.cyclesDone(), p.history().source, p.history().seat, p.history().peak, rec.period, O.dt,
-            rec.period / O.dt))
-        if self.cyclesDone() < target:   # a run killed after its last cycle: its outputs only
-            self.runUntil(lambda: self.cyclesDone() >= target or self.onFloor, tEnd=tEnd + 2 * rec.period / p['samples'],
-                          phase='load', checkEvery=50, simSpan=tEnd - O.time, simStart=O.time,
-                          extra=lambda: 'cycle %d of %d, settlement %.2f mm, %d crushed, %d abraded' % (
-                              self.cyclesDone(), target, 1e3 * (rec.samples[-1][4] if rec.samples else 0),
-                              rec.samples[-1][6] if rec.samples else 0, rec.samples[-1][7] if rec.samples else 0))
-        if self.onFloor and rec.partial is None:
+    def prepared(self):
+        return self.recorder is not None
+
+    def stopReason(self):
+        return 'the sleeper is on the floor' if self.onFloor else None
+
+    def loadText(self):
+        h = self.p.history()
+        return '%s, %.4g-%.4g N, %.3g s each' % (h.source, h.seat, h.peak, self.recorder.period)
+
+    def stateText(self):
+        last = self.recorder.samples[-1] if self.recorder.samples else (0,) * 8
+        return 'settlement %.2f mm, %d crushed, %d abraded' % (1e3 * last[4], last[6], last[7])
+
+    def atStop(self):
+        if self.onFloor and self.recorder.partial is None:
             self.sample()   # a last sample at the stop, and the cycle it cut short closed with it
-            rec.closePartial(p, self.ownStep())
-        k = self.cyclesDone()
-        self.grade(k)
-        if p['vtk'] > 0:
-            self.frame()   # the last
-        s = self.finishRun(lambda: outputs.write(self))
-        self.say('done: %d cycles%s, settlement %.2f mm (resilient %.3f mm), %d crushed, %d abraded; results in %s' % (
-            s['cycles'], ' and cycle %d cut short on the floor' % rec.partial if rec.partial else '',
-            1e3 * s['settlement'], 1e3 * s['resilient'], s['nCrushed'], s['nAbraded'], self.out))
-        return s
+            self.recorder.closePartial(self.p, self.ownStep())
+
+    def doneText(self, s):
+        return '%d cycles%s, settlement %.2f mm (resilient %.3f mm), %d crushed, %d abraded' % (
+            s['cycles'], ' and cycle %d cut short on the floor' % self.recorder.partial if self.recorder.partial else '',
+            1e3 * s['settlement'], 1e3 * s['resilient'], s['nCrushed'], s['nAbraded'])
+
+    def writeOutputs(self):
+        return outputs.write(self)
 
     def resumed(self, state):
         """Experiment.resumeKilled's last step: this run, reopened from `state` in the folder of its killed

@@ -16,7 +16,7 @@ import numpy as np
 from yade import O, Vector3, plot
 
 from ... import runtime
-from ...params import requireWritableDir, validate
+from ...params import requireWritableDir
 from ...settlementlaws import bedChanged
 from .. import breakage, chain, grains, preparation, quasistatic, scene
 from ..base import Experiment
@@ -24,7 +24,7 @@ from ..cyclic import Cyclic, RecordedCycles, appendSample
 from ..parameters import CYCLE_JUMP
 from . import monotonic, outputs, specimen
 from .membrane import Membrane
-from .parameters import OWNER, PARAMS, TriaxialParameters
+from .parameters import OWNER, TriaxialParameters
 from .recorder import Recorder
 from .strains import axialStrain, volumetricStrain
 
@@ -226,50 +226,34 @@ class TriaxialTest(RecordedCycles, Cyclic, Experiment):
         return outputs.cycleTable(self)
 
     def load(self, cycles=None):
-        """Run `cycles` more load cycles (default the parameter's), then write every output and save the state.
-        Returns the summary."""
-        p = self.p
-        if p['monotonic']:
-            return self.compress()
-        n = p['cycles'] if cycles is None else validate(OWNER + '.load', {'cycles': PARAMS['cycles']}, 'cycles', cycles)
-        if self.recorder is None:
-            if self.rig is None:
-                self.prepare()
-            self.startCycling()
-        if self.out is None:   # a reopened run writes into a folder of its own
-            self.dir.create()
-            self.markRunning(continues=self.dir.previous, continuesState=self.dir.source)
-        if self.failed is not None:
-            self.say('load: no cycles: the specimen failed in cycle %d' % self.failed)
-            return self.finishRun(lambda: outputs.write(self))
-        self.syncJumping()
-        self.startFrames()
-        self.target = self.cyclesDone() + n
-        return self.goOnToEnd()
+        """Run `cycles` more load cycles (default the parameter's), then write every output and save the state; with
+        monotonic, the monotonic compression instead. Returns the summary."""
+        return self.compress() if self.p['monotonic'] else RecordedCycles.load(self, cycles)
 
-    def goOnToEnd(self):
-        p, rec, target = self.p, self.recorder, self.target
-        tEnd = rec.t0 + (target - rec.jumped) * rec.period
-        if self.jumper is not None:
-            self.jumper.target = target
-        self.say('load: %d cycle(s) of q %g-%g kPa (%s) of %.3g s under p\' = %g kPa, dt = %.3g s (%.3g steps a cycle)' % (
-            target - self.cyclesDone(), p.seatDeviator() / 1e3, p.peakDeviator() / 1e3, p['loadFile'] or 'sine',
-            p.period(), p['confining'] / 1e3, O.dt, rec.period / O.dt))
-        if self.cyclesDone() < target:
-            self.runUntil(lambda: self.cyclesDone() >= target or self.failed is not None,
-                          tEnd=tEnd + 2 * rec.period / p['samples'], phase='load', checkEvery=50,
-                          simSpan=tEnd - O.time, simStart=O.time,
-                          extra=lambda: 'cycle %d of %d, axial strain %.3f %%, volumetric %.3f %%, %d crushed' % (
-                              self.cyclesDone(), target, 100 * (rec.samples[-1][5] if rec.samples else 0),
-                              100 * (rec.samples[-1][6] if rec.samples else 0), rec.samples[-1][9] if rec.samples else 0))
-        k = self.cyclesDone()
-        self.grade(k)
-        if p['vtk'] > 0:
-            self.frame()   # the last
-        s = self.finishRun(lambda: outputs.write(self))
-        self.say('done: %d cycles, axial strain %.3f %%, volumetric %.3f %%, %d crushed, %d abraded; results in %s' % (
-            k, 100 * s['axialStrain'], 100 * s['volumetricStrain'], s['nCrushed'], s['nAbraded'], self.out))
-        return s
+    def cyclingStarted(self):
+        return self.recorder is not None
+
+    def prepared(self):
+        return self.rig is not None
+
+    def stopReason(self):
+        return None if self.failed is None else 'the specimen failed in cycle %d' % self.failed
+
+    def loadText(self):
+        p = self.p
+        return 'q %g-%g kPa (%s) of %.3g s under p\' = %g kPa' % (
+            p.seatDeviator() / 1e3, p.peakDeviator() / 1e3, p['loadFile'] or 'sine', p.period(), p['confining'] / 1e3)
+
+    def stateText(self):
+        last = self.recorder.samples[-1] if self.recorder.samples else (0,) * 10
+        return 'axial strain %.3f %%, volumetric %.3f %%, %d crushed' % (100 * last[5], 100 * last[6], last[9])
+
+    def doneText(self, s):
+        return '%d cycles, axial strain %.3f %%, volumetric %.3f %%, %d crushed, %d abraded' % (
+            self.cyclesDone(), 100 * s['axialStrain'], 100 * s['volumetricStrain'], s['nCrushed'], s['nAbraded'])
+
+    def writeOutputs(self):
+        return outputs.write(self)
 
     def summary(self):
         return outputs.monotonicSummary(self) if self.compression is not None else outputs.summary(self)
