@@ -13,6 +13,10 @@ import tempfile
 
 from ballast.experiments.box import BoxTest
 
+# under `yade -x` __file__ is yade's own; sys.argv[0] is this script
+sys.path.insert(0, os.path.dirname(os.path.abspath(sys.argv[0] if sys.argv[0].endswith('.py') else __file__)))
+from timing import optionList  # noqa: E402
+
 OPTIONS = {'paper': {}, 'stiffness': {'timeStep': 'stiffness'}, 'density1.2e-6': {'densityStep': 1.2e-6}}
 REDUCED = dict(boxLength=0.45, boxWidth=0.2, bedDepth=0.15, layers=2, sleeperWidth=0.15, sleeperHeight=0.1,
                sleeperMass=15.0, peakLoad=20e3, seatLoad=1.5e3)   # about the default's pressure under the sleeper
@@ -24,14 +28,12 @@ def main(argv):
     ap.add_argument('--cycles', type=int, default=2)
     ap.add_argument('--f', type=float, default=3.0, help='[Hz] the loading frequency (default 3, the experiment\'s)')
     ap.add_argument('--full', action='store_true', help='the experiment\'s default box instead of the reduced one')
-    ap.add_argument('--options', default=','.join(OPTIONS), help='comma-separated, of: ' + ', '.join(OPTIONS))
+    ap.add_argument('--options', type=optionList(OPTIONS), default=list(OPTIONS),
+                    help='comma-separated, of: ' + ', '.join(OPTIONS))
     ap.add_argument('--bedDir', default=os.path.join('results', 'beds'))
     ap.add_argument('--out', default=os.path.join(tempfile.gettempdir(), 'bench_box.json'))
     a = ap.parse_args(argv)
-    names = a.options.split(',')
-    unknown = [n for n in names if n not in OPTIONS]
-    if unknown:
-        ap.error('--options: %s unknown; options: %s' % (', '.join(unknown), ', '.join(OPTIONS)))
+    names = a.options
     size = {} if a.full else REDUCED
     results = {}
     for name in names:

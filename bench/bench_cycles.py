@@ -12,6 +12,10 @@ import tempfile
 
 from ballast.oedometer import Oedometer
 
+# under `yade -x` __file__ is yade's own; sys.argv[0] is this script
+sys.path.insert(0, os.path.dirname(os.path.abspath(sys.argv[0] if sys.argv[0].endswith('.py') else __file__)))
+from timing import optionList  # noqa: E402
+
 OPTIONS = {'paper': {}, 'stiffness': {'timeStep': 'stiffness'}, 'density1.2e-6': {'densityStep': 1.2e-6},
            'density2e-6': {'densityStep': 2e-6}}
 
@@ -21,14 +25,12 @@ def main(argv):
     ap.add_argument('--seed', type=int, default=2)
     ap.add_argument('--cycles', type=int, default=3)
     ap.add_argument('--Fmin', type=float, default=150e3, help='[N] the cycles run between Fmin and Fmax')
-    ap.add_argument('--options', default=','.join(OPTIONS), help='comma-separated, of: ' + ', '.join(OPTIONS))
+    ap.add_argument('--options', type=optionList(OPTIONS), default=list(OPTIONS),
+                    help='comma-separated, of: ' + ', '.join(OPTIONS))
     ap.add_argument('--packingDir', default=os.path.join('results', 'packings'))
     ap.add_argument('--out', default=os.path.join(tempfile.gettempdir(), 'bench_cycles.json'))
     a = ap.parse_args(argv)
-    names = a.options.split(',')
-    unknown = [n for n in names if n not in OPTIONS]
-    if unknown:
-        ap.error('--options: %s unknown; options: %s' % (', '.join(unknown), ', '.join(OPTIONS)))
+    names = a.options
     results = {}
     for name in names:
         run = Oedometer(seed=a.seed, cycles=a.cycles, Fmin=a.Fmin, packingDir=a.packingDir,

@@ -1,4 +1,5 @@
 """Shared by the bench scripts (run under `yade -x`; they put bench/ on sys.path by hand)."""
+import argparse
 import time
 
 import __main__
@@ -38,3 +39,15 @@ def stamped(steps):
     O.run(steps + 1, True)
     O.engines = [e for e in O.engines if e.label != 'benchStamp']
     return stamps[1] - stamps[0]
+
+
+def optionList(options):
+    """An argparse type: a comma-separated list of the names in `options` (a bench's set-ups), in the order given;
+    an unknown name is refused with the names there are."""
+    def names(text):
+        got = text.split(',')
+        unknown = [n for n in got if n not in options]
+        if unknown:
+            raise argparse.ArgumentTypeError('%s unknown; options: %s' % (', '.join(unknown), ', '.join(options)))
+        return got
+    return names
