@@ -312,8 +312,9 @@ class Cyclic:
 
 class RecordedCycles:
     """For a cyclic experiment whose recorder counts its cycles (a row each in recorder.cycles, recorder.jumped
-    jumped over) and that grades its grains after chosen cycles (self.gradings): the box and the triaxial test. Put
-    before :class:`Cyclic` among the bases."""
+    jumped over) and that grades its grains after chosen cycles (self.gradings): the box and the triaxial test. It
+    owns their load() (below: the lifecycle here, their own in the hooks). Put before :class:`Cyclic` among the
+    bases."""
 
     def jumped(self, cycles):
         self.recorder.jump(cycles)
