@@ -6,6 +6,8 @@ docs/box.md, "The study"):
         [--tipping 0.02] [--reference docs/studies/box --at 1 5 10 25 50]
     scripts/box_settlement.py docs/studies/box-sg --by fatigue keep --reference 'docs/studies/box-sg[fatigue=1
         keep=none]' --at 1 10 100 --apart sg-volume-seed2-c96 --out docs/studies/box-sg
+    scripts/box_settlement.py docs/studies/clump-box-level docs/studies/clump-box-level-slices --join
+        --out docs/studies/clump-box-level
 
 writes settlement.csv (every run's curve), runs.csv (per realization what it broke and cost: crushes, abrasions,
 largest fatigue damage and stress ratio, grains, CPU per cycle and per realization, step, the largest and the last
@@ -16,7 +18,8 @@ other studies cover, and each other study's runs against the reference's of the 
 settlement-paired.csv (per seed and cycle) and settlement-paired.json (per cycle: the mean difference with its 95 %
 interval, the mean ratio). --tipping reads apart the realizations whose sleeper rose back by more than that many mm
 above its deepest settlement (it tips or rocks instead of settling), naming the cycle it did, and --apart those
-named by seed or run id; --by splits a study's runs into its variants (rows differing in those parameters), each
+named by seed or run id; --join reads a table of slices with the table whose rows it carries on (a realization
+under the study it began in); --by splits a study's runs into its variants (rows differing in those parameters), each
 read as a study."""
 import argparse
 import json
@@ -68,6 +71,10 @@ def main(argv=None):
     ap.add_argument('--by', nargs='+', default=[], metavar='PARAM',
                     help="the parameters whose values split a study's runs into variants, each its own study named "
                     "'STUDY[PARAM=value ...]' (e.g. --by fatigue keep)")
+    ap.add_argument('--join', action='store_true',
+                    help='a realization whose slices go on in another of the studies belongs to the study it began in '
+                    '(a table of slices with the table whose rows it carries on: one mean over their seeds); '
+                    'default: to the study of its last slice')
     ap.add_argument('--reference', metavar='STUDY', help='a study (read too if not listed), or with --by a variant '
                     "'STUDY[PARAM=value ...]', whose runs the others are compared with, seed by seed (the same bed)")
     ap.add_argument('--at', type=int, nargs='+', default=[1, 10, 100], metavar='N',
@@ -78,7 +85,7 @@ def main(argv=None):
         a.studies.append(referenceStudy)
     try:
         frame = settlement.curves(a.studies, apart=a.apart, tipping=None if a.tipping is None else 1e-3 * a.tipping,
-                                  by=a.by)
+                                  by=a.by, join=a.join)
         names = list(frame.study.unique())
         if a.reference and a.reference not in names:
             raise ValueError('--reference %s: no such study or variant; there are %s' % (a.reference, ', '.join(names)))
@@ -96,7 +103,7 @@ def main(argv=None):
         return 2
     os.makedirs(a.out, exist_ok=True)
     frame.to_csv(os.path.join(a.out, 'settlement.csv'), index=False, float_format='%.9g')
-    runs = settlement.realizations(a.studies, by=a.by).merge(frame.groupby('runId').tippedAt.first().reset_index())
+    runs = settlement.realizations(a.studies, by=a.by, join=a.join).merge(frame.groupby('runId').tippedAt.first().reset_index())
     runs.to_csv(os.path.join(a.out, 'runs.csv'), index=False, float_format='%.9g')
     if pairs:
         rows = [r.assign(study=study) for study, (r, _) in pairs.items()]

@@ -12,14 +12,16 @@ from ballast.analysis import settlement
 
 def study(root, curves, continueFrom=None):
     """A records folder with one run per curve {runId: (seed, settlements[, more parameters])}; continueFrom
-    {runId: the runId whose end state it continued from}."""
+    {runId: the runId whose end state it continued from, in this study, or 'study/runId' in another}."""
     rows = []
     for k, (rid, (seed, s, *more)) in enumerate(curves.items()):
         d = os.path.join(root, 'runs', rid)
         os.makedirs(d)
         params = dict({'seed': seed, 'continueFrom': ''}, **(more[0] if more else {}))
         if continueFrom and rid in continueFrom:   # as a slice's row names it: a path through the records
-            params['continueFrom'] = '/elsewhere/docs/studies/box/runs/%s/state-end.yade.gz' % continueFrom[rid]
+            where, _, before = continueFrom[rid].rpartition('/')
+            params['continueFrom'] = '/elsewhere/docs/studies/%s/runs/%s/state-end.yade.gz' % (
+                where or os.path.basename(root), before)
         with open(os.path.join(d, 'summary.json'), 'w') as fh:
             json.dump({'settlement': s[-1], 'params': params}, fh)
         with open(os.path.join(d, 'cycles.csv'), 'w') as fh:
@@ -65,6 +67,32 @@ def test_a_realization_run_in_slices_counts_once_as_its_last_slice(tmp_path):
     assert sorted(frame.runId.unique()) == ['s1-c8', 's2-c8']
     f = settlement.summary(frame)[root]
     assert f['runs'] == 2 and f['cycles'] == 8 and f['settlementLast'] == pytest.approx(1e-4 * (2 + 8), rel=1e-12)
+
+
+def test_slices_in_a_study_of_their_own_join_the_study_they_began_in(tmp_path, capsys):
+    # seeds 1 and 3 begin in 'level' (cycles 1-4); their slices go on in 'level-slices': seed 1 to 8, seed 3 to 8 and
+    # then 12 (a slice of a slice); seed 5 in 'level-slices' goes on from a state outside both (its own)
+    one = [1e-4 * n for n in range(1, 13)]
+    three = [3e-4 * n for n in range(1, 13)]
+    level = study(str(tmp_path / 'level'), {'s1-c4': (1, one[:4]), 's3-c4': (3, three[:4])})
+    slices = study(str(tmp_path / 'level-slices'), {'s1-c8': (1, one[:8]), 's3-c8': (3, three[:8]),
+                                                    's3-c12': (3, three), 's5-c8': (5, one[:8])},
+                   continueFrom={'s1-c8': 'level/s1-c4', 's3-c8': 'level/s3-c4', 's3-c12': 's3-c8',
+                                 's5-c8': 'elsewhere/s5-c4'})
+    apart = settlement.curves([level, slices])
+    assert set(apart.study) == {slices}   # read as they lie: every last slice is in the slices' study
+    joined = settlement.curves([level, slices], join=True)
+    assert sorted(joined.runId.unique()) == ['s1-c8', 's3-c12', 's5-c8']
+    assert dict(joined.groupby('runId').study.first()) == {'s1-c8': level, 's3-c12': level, 's5-c8': slices}
+    f = settlement.summary(joined)
+    # seeds 1 and 3 to their common cycle 8: the mean of 1e-4 n and 3e-4 n is 2e-4 n
+    assert f[level]['runs'] == 2 and f[level]['cycles'] == 8
+    assert f[level]['settlementLast'] == pytest.approx(2e-4 * 8, rel=1e-12)
+    assert f[slices]['runs'] == 1 and f[slices]['settlementLast'] == pytest.approx(8e-4, rel=1e-12)
+    runs = settlement.realizations([level, slices], join=True)
+    assert dict(zip(runs.runId, runs.study)) == {'s1-c8': level, 's3-c12': level, 's5-c8': slices}
+    assert boxSettlement()([level, slices, '--join', '--out', str(tmp_path / 'out')]) == 0
+    assert '%s: 2 runs to cycle 8' % level in capsys.readouterr().out
 
 
 def caught(monkeypatch):

@@ -43,18 +43,19 @@ def variantLabel(path, params, by):
     return '%s[%s]' % (path, ' '.join('%s=%s' % (k, text(params[k])) for k in by)) if by else path
 
 
-def curves(paths, apart=(), tipping=None, by=()):
+def curves(paths, apart=(), tipping=None, by=(), join=False):
     """The settlement curves of the finished runs of the studies (or records) at `paths`, a realization run in
     slices once, as its last slice: a DataFrame with study, runId, seed, cycle, settlement [m], resilient [m]
     (NaN where a run has none), apart (its seed or runId is one of `apart`: a realization read apart by choice) and
     tippedAt (with `tipping`, a rise [m]: the cycle from which the sleeper rose back more than that,
     tippingOnset; NaN where it did not). A realization apart or tipped is left out of the mean (readApart).
     With `by` (parameter names) the runs of a study that differ in those (its variants, fatigue on and off for
-    example) are studies of their own, named by variantLabel: each has its mean, and they pair seed by seed."""
+    example) are studies of their own, named by variantLabel: each has its mean, and they pair seed by seed. With
+    `join` a realization run in slices belongs to the study it began in (realizationRuns)."""
     if tipping is not None and not (isinstance(tipping, (int, float)) and math.isfinite(tipping) and tipping > 0):
         raise ValueError('curves: tipping = %r m; allowed: a rise above 0 m, or None (no detection)' % (tipping,))
     rows = []
-    for label, run, c in realizationRuns(paths, by):
+    for label, run, c in realizationRuns(paths, by, join):
         seed = run.params.get('seed')
         s = total(c)
         onset = tippingOnset(c['cycle'], s, tipping) if tipping is not None else None
@@ -81,20 +82,42 @@ def continuedElsewhere(study, others):
     return ids
 
 
-def realizationRuns(paths, by=()):
+def began(studies):
+    """origin(path, run): the path of the study of `studies` ((path, StudyRuns) pairs) whose run the realization of
+    `run` began with, following its continueFrom through the slices before it (in its study or another of them);
+    its own path where it began itself or goes on from a state outside them."""
+    runs = {(os.path.basename(os.path.normpath(s.dir)), r.runId): (path, r) for path, s in studies for r in s.runs}
+
+    def origin(path, run):
+        seen = set()
+        while run.params.get('continueFrom') and run.runId not in seen:
+            seen.add(run.runId)
+            parts = os.path.normpath(run.params['continueFrom']).split(os.sep)
+            before = runs.get((parts[-4], parts[-2])) if len(parts) >= 4 and parts[-3] == 'runs' else None
+            if before is None:
+                break
+            path, run = before
+        return path
+    return origin
+
+
+def realizationRuns(paths, by=(), join=False):
     """(study or variant label, run, its cycles.csv) of every finished realization of the studies at `paths` that
     wrote cycles.csv with cycle and settlement, a realization run in slices once: as its last slice (its slices in
-    one study, or going on in another study of `paths`)."""
+    one study, or going on in another study of `paths`). With `join` a realization whose slices go on in another
+    study is labelled by the study it began in (a table of slices read with the table whose rows they carry on:
+    their seeds' mean together); without, by the study of its last slice."""
     studies = [(path, StudyRuns(path)) for path in paths]
+    origin = began(studies) if join else (lambda path, run: path)
     for path, study in studies:
         earlier = continued(study.runs) | continuedElsewhere(study, [s for _, s in studies if s is not study])
         for run in study.runs:
             c = None if run.runId in earlier else run.cycles
             if c is not None and 'settlement' in c:
-                yield variantLabel(path, run.params, by), run, c
+                yield variantLabel(origin(path, run), run.params, by), run, c
 
 
-def realizations(paths, by=()):
+def realizations(paths, by=(), join=False):
     """What each realization of the studies at `paths` cost and broke, a row each (realizationRuns): study, runId,
     seed, cycles; over all its cycles (the last slice's cycles.csv holds the earlier ones) the crushes and
     abrasions, the largest fatigue damage and stress ratio, the grains after cycle 1 and at the end, and the CPU
@@ -103,9 +126,9 @@ def realizations(paths, by=()):
     many (avalancheCrushes), NaN when none crushed: where a bed collapses, the cycle variants move; the sleeper's
     largest |tilt| and its tilt after the last cycle (tiltMax, tiltLast [rad]: how far it tipped); from its last
     slice's summary.json the step (timeStep, its dt [s]) and the steps per cycle. NaN where the records have no such
-    column (records of before a column was written)."""
+    column (records of before a column was written). `join` as in realizationRuns."""
     rows = []
-    for label, run, c in realizationRuns(paths, by):
+    for label, run, c in realizationRuns(paths, by, join):
         def over(name, how):
             return float(how(c[name].to_numpy())) if name in c else math.nan
         s = run.summary or {}
