@@ -90,8 +90,8 @@ def began(studies):
 
     def origin(path, run):
         seen = set()
-        while run.params.get('continueFrom') and run.runId not in seen:
-            seen.add(run.runId)
+        while run.params.get('continueFrom') and (path, run.runId) not in seen:   # a loop of states ends
+            seen.add((path, run.runId))
             parts = os.path.normpath(run.params['continueFrom']).split(os.sep)
             before = runs.get((parts[-4], parts[-2])) if len(parts) >= 4 and parts[-3] == 'runs' else None
             if before is None:
