@@ -42,8 +42,8 @@ def test_the_command_line_sets_what_the_declaration_says():
     spec = {'yade': 'yade', 'nice': None, 'runId': 'r1', 'sets': {'results': 'out', 'runId': 'name', 'sampleStore': None}}
     assert runner.command(spec, 'a.py', '/res', '/samples') == ['yade', '-n', '-x', 'a.py', '--out', '/res', '--name', 'r1']
     spec = dict(spec, nice=5, sets=declaration('oedometer').sets)
-    assert runner.command(spec, 'a.py', '/res', '/samples') == ['yade', '--nice=5', '-n', '-x', 'a.py', '--results', '/res',
-                                                              '--runId', 'r1', '--packingDir', '/samples']
+    assert runner.command(spec, 'a.py', '/res', '/samples') == ['nice', '-n', '5', 'yade', '-n', '-x', 'a.py', '--results',
+                                                              '/res', '--runId', 'r1', '--packingDir', '/samples']
     spec = dict(spec, nice=None, sets=declaration('box').sets)
     assert runner.command(spec, 'a.py', '/res', '/beds', resume=True)[-4:] == ['--bedDir', '/beds', '--resume', '1']
 
@@ -64,7 +64,8 @@ def test_a_finished_run_goes_to_runs_with_its_row_and_log(spec):
     assert res['summary']['peakForce'] == 2001.0  # what the run wrote, read back
     s = seen(run)
     assert s['OMP_NUM_THREADS'] == '1' and s['script'] == SCRIPT
-    assert s['argv'][:4] == ['--nice=10', '-n', '-x', spec['scriptPath']]  # the client's own file: the same text
+    assert s['argv'][:3] == ['-n', '-x', spec['scriptPath']]  # the client's own file: the same text
+    assert s['niceness'] == min(19, os.nice(0) + 10)   # the run itself is niced (yade's own --nice is a no-op)
     assert s['argv'][-2:] == ['--packingDir', spec['packings']]  # shared: the study's packings
     assert len(os.listdir(spec['packings'])) == 1
     log = open(os.path.join(spec['out'], 'logs', spec['runId'] + '.log')).read()

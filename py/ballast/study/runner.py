@@ -81,11 +81,12 @@ def workDir(spec, shared, leader):
 
 
 def command(spec, script, results, samples, resume=False):
-    """The yade command line of a run: yade [--nice=N] -n -x SCRIPT, then the parameters the study sets
+    """The yade command line of a run: [nice -n N] yade -n -x SCRIPT, then the parameters the study sets
     (spec['sets'], the declaration's): where the run writes, its id, where prepared samples are stored
-    (left out for an experiment without them), and with resume that it goes on with the killed run there."""
+    (left out for an experiment without them), and with resume that it goes on with the killed run there.
+    Niced by coreutils' nice: yade 2023.02a reads its own --nice option and never applies it."""
     sets = spec['sets']
-    return [spec['yade']] + (['--nice=%d' % spec['nice']] if spec['nice'] is not None else []) + [
+    return (['nice', '-n', str(spec['nice'])] if spec['nice'] is not None else []) + [spec['yade']] + [
         '-n', '-x', script, '--' + sets['results'], results, '--' + sets['runId'], spec['runId']] + (
         ['--' + sets['sampleStore'], samples] if sets.get('sampleStore') else []) + (
         ['--' + sets['resume'], '1'] if resume else [])
