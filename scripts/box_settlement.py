@@ -103,7 +103,8 @@ def main(argv=None):
         return 2
     os.makedirs(a.out, exist_ok=True)
     frame.to_csv(os.path.join(a.out, 'settlement.csv'), index=False, float_format='%.9g')
-    runs = settlement.realizations(a.studies, by=a.by, join=a.join).merge(frame.groupby('runId').tippedAt.first().reset_index())
+    runs = settlement.realizations(a.studies, by=a.by, join=a.join).merge(
+        frame.groupby('runId').tippedAt.first().reset_index())
     runs.to_csv(os.path.join(a.out, 'runs.csv'), index=False, float_format='%.9g')
     if pairs:
         rows = [r.assign(study=study) for study, (r, _) in pairs.items()]

@@ -69,6 +69,13 @@ def curves(paths, apart=(), tipping=None, by=(), join=False):
     return pd.concat(rows, ignore_index=True)
 
 
+def slicedFrom(run):
+    """(study folder name, runId) of the run whose recorded state `run` goes on from (its continueFrom is
+    .../<study>/runs/<runId>/<state file>), None where it began itself or goes on from a state kept elsewhere."""
+    parts = os.path.normpath(run.params.get('continueFrom') or '.').split(os.sep)
+    return (parts[-4], parts[-2]) if len(parts) >= 4 and parts[-3] == 'runs' else None
+
+
 def continuedElsewhere(study, others):
     """The runIds of `study`'s runs a run of another study (`others`) continued from: a state in
     <that study's folder name>/runs/<runId>/ (a study whose slices go on in a study of their own)."""
@@ -76,9 +83,9 @@ def continuedElsewhere(study, others):
     ids = set()
     for other in others:
         for r in other.runs:
-            parts = os.path.normpath(r.params.get('continueFrom') or '.').split(os.sep)
-            if len(parts) >= 4 and parts[-4:-2] == [name, 'runs']:
-                ids.add(parts[-2])
+            before = slicedFrom(r)
+            if before and before[0] == name:
+                ids.add(before[1])
     return ids
 
 
@@ -90,10 +97,9 @@ def began(studies):
 
     def origin(path, run):
         seen = set()
-        while run.params.get('continueFrom') and (path, run.runId) not in seen:   # a loop of states ends
+        while (path, run.runId) not in seen:   # a loop of states ends
             seen.add((path, run.runId))
-            parts = os.path.normpath(run.params['continueFrom']).split(os.sep)
-            before = runs.get((parts[-4], parts[-2])) if len(parts) >= 4 and parts[-3] == 'runs' else None
+            before = runs.get(slicedFrom(run))
             if before is None:
                 break
             path, run = before
