@@ -5,8 +5,8 @@ test_study_study.py): it keeps the oedometer's command-line contract,
     fake-yade -n -x SCRIPT --results DIR --runId ID --packingDir DIR   (YADE_BATCH=table:line)
 
 builds the packing its row needs when it is not stored, and writes DIR/ID/summary.json, fd.csv and
-seen.json (what it was given, and its niceness). The environment variable FAKE (a '!FAKE' column of
-the table) makes it fail (exit 3, leaving a partial output), hang (with a child process; both pids in pids.json, and in
+seen.json (what it was given, its niceness and its scheduling group's). The environment variable FAKE (a '!FAKE'
+column of the table) makes it fail (exit 3, leaving a partial output), hang (with a child process; both pids in pids.json, and in
 the file FAKE_PIDS names if set; a state to resume from saved first),
 end without a summary, with a summary cut in half (exit 0 both), or be killed by SIGKILL mid-run."""
 import json
@@ -35,7 +35,9 @@ out = os.path.join(opts['--results'], opts['--runId'])
 os.makedirs(out, exist_ok=('--resume' in opts))   # a run that resumes finds its folder
 with open(os.path.join(out, 'seen.json'), 'w') as fh:
     json.dump({'argv': argv, 'script': open(script).read(), 'OMP_NUM_THREADS': os.environ.get('OMP_NUM_THREADS'),
-               'packings': sorted(os.listdir(opts['--packingDir'])), 'niceness': os.nice(0)}, fh)
+               'packings': sorted(os.listdir(opts['--packingDir'])), 'niceness': os.nice(0),
+               'groupNice': (open('/proc/self/autogroup').read().split()[-1]
+                             if os.path.exists('/proc/self/autogroup') else None)}, fh)
 mode = os.environ.get('FAKE', 'ok')
 print('fake yade: run %s, mode %s' % (opts['--runId'], mode), flush=True)
 if mode == 'fail':

@@ -66,6 +66,8 @@ def test_a_finished_run_goes_to_runs_with_its_row_and_log(spec):
     assert s['OMP_NUM_THREADS'] == '1' and s['script'] == SCRIPT
     assert s['argv'][:3] == ['-n', '-x', spec['scriptPath']]  # the client's own file: the same text
     assert s['niceness'] == min(19, os.nice(0) + 10)   # the run itself is niced (yade's own --nice is a no-op)
+    if s['groupNice'] is not None:  # and its session's scheduling group: else it takes a full share beside others
+        assert s['groupNice'] == '10'
     assert s['argv'][-2:] == ['--packingDir', spec['packings']]  # shared: the study's packings
     assert len(os.listdir(spec['packings'])) == 1
     log = open(os.path.join(spec['out'], 'logs', spec['runId'] + '.log')).read()

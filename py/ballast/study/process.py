@@ -83,9 +83,29 @@ def dieWithParent(parent):
         os.kill(os.getpid(), signal.SIGTERM)
 
 
-def runYade(cmd, env, cwd, logPath, deadline, stopped, keepFds=()):
+def niceGroup(nice):
+    """preexec_fn part: nice the scheduling group (autogroup) of the session the run has just made. Under a kernel
+    that groups by session (Debian 12's default) the run's own nice value ranks it only within that session, so a
+    niced study would still take a full share of the machine beside a test suite or an interactive session. A kernel
+    without autogroup has no such file: the nice value alone then does it."""
+    try:
+        with open('/proc/self/autogroup', 'w') as fh:
+            fh.write(str(nice))
+    except OSError:
+        pass
+
+
+def startRun(parent, nice):
+    """preexec_fn of a run's yade (after its setsid): it dies with the runner, and its group is niced."""
+    dieWithParent(parent)
+    if nice is not None and nice > 0:
+        niceGroup(nice)
+
+
+def runYade(cmd, env, cwd, logPath, deadline, stopped, keepFds=(), nice=None):
     """Run cmd with its output in logPath; kill it (and its children: its own process group) past
-    the deadline or when stopped(). keepFds: descriptors it inherits (the run's lock). Should this
+    the deadline or when stopped(). keepFds: descriptors it inherits (the run's lock); nice: the run's
+    nice value, given to the scheduling group of its session as well (niceGroup). Should this
     process die first, the run dies with it: yade by its parent-death signal, what it started by the
     watchdog. Returns (exit code, None or 'timeout' or 'stopped')."""
     watchdog = subprocess.Popen([sys.executable, '-I', '-S', '-c', WATCHDOG, str(KILL_WAIT)], stdin=subprocess.PIPE,
@@ -94,7 +114,7 @@ def runYade(cmd, env, cwd, logPath, deadline, stopped, keepFds=()):
         with open(logPath, 'w') as log:
             proc = subprocess.Popen(cmd, stdout=log, stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL, env=env, cwd=cwd,
                                     start_new_session=True, pass_fds=keepFds,
-                                    preexec_fn=functools.partial(dieWithParent, os.getpid()))
+                                    preexec_fn=functools.partial(startRun, os.getpid(), nice))
         watchdog.stdin.write(b'%d\n' % proc.pid)
         watchdog.stdin.flush()
         while True:

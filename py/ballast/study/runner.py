@@ -133,7 +133,7 @@ def runRow(spec, leader=None):
         logPath = os.path.join(work, 'run.log')
         code = codeSha1(spec['scriptText'])  # as the run starts, before yade imports the package
         rc, why = runYade(cmd, env, work, logPath, spec['timeout'] and started + spec['timeout'], stopped,
-                          [lock.fileno()] if lock else [])
+                          [lock.fileno()] if lock else [], nice=spec['nice'])
         finished = time.time()
         res.update(rc=rc, finished=finished, wall=finished - started)
         runDir = os.path.join(results, runId)
