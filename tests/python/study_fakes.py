@@ -6,9 +6,9 @@ test_study_study.py): it keeps the oedometer's command-line contract,
 
 builds the packing its row needs when it is not stored, and writes DIR/ID/summary.json, fd.csv and
 seen.json (what it was given, its niceness and its scheduling group's). The environment variable FAKE (a '!FAKE'
-column of the table) makes it fail (exit 3, leaving a partial output), hang (with a child process; both pids in pids.json, and in
-the file FAKE_PIDS names if set; a state to resume from saved first),
-end without a summary, with a summary cut in half (exit 0 both), or be killed by SIGKILL mid-run."""
+column of the table) makes it fail (exit 3, leaving a partial output), hang (with a child process; both pids in
+pids.json, and in the file FAKE_PIDS names if set; a state to resume from saved first), end without a summary, with
+a summary cut in half (exit 0 both), or be killed by SIGKILL mid-run."""
 import json
 import os
 import signal
