@@ -8,6 +8,10 @@ called at events, never per step.
 * elastic: over the real contacts with at least one of the bodies, each counted once. Linear law
   (FrictPhys): Fn^2 / (2 kn) + Fs^2 / (2 ks). Hertz-Mindlin (MindlinPhys): the normal energy of
   F = kno u^1.5 is 2/5 Fn uN, the tangential Fs^2 / (2 ks) with ks the current tangent stiffness.
+
+A clump is one body to its motion and its members to its contacts (YADE integrates the clump; the members carry
+the contacts): a member or a clump given, its clump moves (kinetic), its members' contacts store (elastic), and its
+partners are the grains on the other side of those contacts. Bodies that are not in a clump are as before.
 """
 from yade import O
 
@@ -21,39 +25,60 @@ def rotational(s):
     return 0.5 * (j[0] * w[0] ** 2 + j[1] * w[1] ** 2 + j[2] * w[2] ** 2)
 
 
-def kinetic(ids):
-    """Kinetic energy [J] of the bodies `ids` (missing ones skipped)."""
-    e = 0.0
+def _grain(b):
+    """The body that moves for b: its clump for a clump member, else b itself."""
+    return O.bodies[b.clumpId] if b.isClumpMember else b
+
+
+def _contactBodies(b):
+    """The bodies that carry b's contacts: a clump's members, else b itself."""
+    return [O.bodies[m] for m in sorted(b.shape.members.keys())] if b.isClump else [b]
+
+
+def _grains(ids):
+    """The bodies that move for `ids` (missing ones skipped; a clump given twice, or with its members, once), in
+    the order given."""
+    seen, out = set(), []
     for i in ids:
         b = O.bodies[i]
         if b is None:
             continue
+        g = _grain(b)
+        if g.id not in seen:
+            seen.add(g.id)
+            out.append(g)
+    return out
+
+
+def kinetic(ids):
+    """Kinetic energy [J] of the bodies `ids` (missing ones skipped; a clump member counts as its clump, once)."""
+    e = 0.0
+    for b in _grains(ids):
         s = b.state
         e += 0.5 * s.mass * s.vel.squaredNorm() + rotational(s)
     return e
 
 
 def partners(ids):
-    """The bodies in real contact with `ids` (ids themselves excluded)."""
-    own = set(ids)
+    """The bodies in real contact with `ids` (ids themselves excluded): for a clump, the grains (a clump, not its
+    member) its members touch."""
+    grains = _grains(ids)
+    own = set(ids) | {g.id for g in grains}
     out = set()
-    for i in ids:
-        b = O.bodies[i]
-        if b is None:
-            continue
-        for c in b.intrs():
-            if c.isReal:
-                out.add(c.id2 if c.id1 == i else c.id1)
+    for g in grains:
+        for b in _contactBodies(g):
+            for c in b.intrs():
+                if c.isReal:
+                    other = O.bodies[c.id2 if c.id1 == b.id else c.id1]
+                    if other is not None:
+                        out.add(_grain(other).id)
     return sorted(out - own)
 
 
 def elastic(ids):
-    """Elastic energy [J] stored in the real contacts of the bodies `ids`."""
+    """Elastic energy [J] stored in the real contacts of the bodies `ids` (of a clump: of its members)."""
     seen, e = set(), 0.0
-    for i in ids:
-        b = O.bodies[i]
-        if b is None:
-            continue
+    for b in (m for g in _grains(ids) for m in _contactBodies(g)):
         for c in b.intrs():
             key = (min(c.id1, c.id2), max(c.id1, c.id2))
             if not c.isReal or key in seen:

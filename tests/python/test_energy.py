@@ -2,10 +2,13 @@
 import math
 
 import pytest
-from yade import O, Quaternion
+from yade import O, Quaternion, utils
+from yade.wrapper import (Bo1_Sphere_Aabb, Bo1_Wall_Aabb, ForceResetter, Ig2_Sphere_Sphere_ScGeom,
+                          Ig2_Wall_Sphere_ScGeom, InsertionSortCollider, InteractionLoop, Ip2_FrictMat_FrictMat_FrictPhys,
+                          Law2_ScGeom_FrictPhys_CundallStrack, NewtonIntegrator)
 
 from ballast import energy
-from ballast.scenes import grainBetweenWalls
+from ballast.scenes import ballastMaterial, grainBetweenWalls, steelMaterial
 
 R, OVERLAP = 0.02, 1e-4
 
@@ -52,3 +55,47 @@ def test_elastic_by_hand_hertz():
     assert 0.4 * i.phys.normalForce.norm() * i.geom.penetrationDepth == pytest.approx(
         0.4 * i.phys.kno * i.geom.penetrationDepth ** 2.5, rel=1e-9)
     assert math.isfinite(e)
+
+
+def _clumpBetweenWalls():
+    """Two members of radius R, 1.2 R apart along x, clumped, pressed along z by two fixed walls at +-(R - OVERLAP)
+    (YADE's linear law): each member touches each wall. Returns (clump id, member ids, wall ids)."""
+    O.reset()
+    steel, ballast = steelMaterial(E=3e12), ballastMaterial(E=3e11)
+    O.materials.append(steel)
+    O.materials.append(ballast)
+    cid, members = O.bodies.appendClumped([utils.sphere((x, 0, 0), R, material=ballast) for x in (-0.6 * R, 0.6 * R)])
+    walls = [O.bodies.append(utils.wall(s * (R - OVERLAP), axis=2, sense=-s, material=steel)) for s in (-1, 1)]
+    O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Wall_Aabb()]),
+                 InteractionLoop([Ig2_Sphere_Sphere_ScGeom(), Ig2_Wall_Sphere_ScGeom()], [Ip2_FrictMat_FrictMat_FrictPhys()],
+                                 [Law2_ScGeom_FrictPhys_CundallStrack()]), NewtonIntegrator(gravity=(0, 0, 0), damping=0.0)]
+    O.dt = 0.5 * utils.PWaveTimeStep()
+    return cid, sorted(members), walls
+
+
+def test_a_clump_stores_in_its_members_contacts_and_moves_once():
+    """A clump has no contacts of its own: its members do. Four member-wall contacts, each Fn^2 / (2 kn) (no shear:
+    the walls press along the contact normals); the partners are the two walls; the kinetic energy is the clump's
+    1/2 M v^2 (YADE integrates the clump; the members' own masses are not a second body), whether the clump, a
+    member or both are given. Before 2026-12-06 a clump's snapshot read none of its members' contacts (0 J)."""
+    cid, members, walls = _clumpBetweenWalls()
+    O.run(1, True)
+    e, n = 0.0, 0
+    for m in members:
+        for w in walls:
+            i = O.interactions[m, w]
+            assert i.isReal
+            e += 0.5 * i.phys.normalForce.norm() ** 2 / i.phys.kn
+            n += 1
+    assert n == 4 and e > 0
+    for ids in ([cid], members[:1], [cid] + members):
+        assert energy.elastic(ids) == pytest.approx(e, rel=1e-12)
+        assert energy.partners(ids) == sorted(walls)
+    c = O.bodies[cid].state
+    c.vel, c.angVel = (0.3, 0.0, 0.4), (0.0, 0.0, 0.0)
+    want = 0.5 * c.mass * 0.25
+    for ids in ([cid], members, [cid] + members + walls):
+        assert energy.kinetic(ids) == pytest.approx(want, rel=1e-12)
+    k, el = energy.snapshot([cid])
+    assert k == pytest.approx(want, rel=1e-12) and el == pytest.approx(e, rel=1e-12)
+    assert energy.partners(walls[:1]) == [cid]   # a wall's partner is the grain, not the member it touches
