@@ -35,6 +35,11 @@ def _contactBodies(b):
     return [O.bodies[m] for m in sorted(b.shape.members.keys())] if b.isClump else [b]
 
 
+def _carriers(grains):
+    """The bodies that carry the contacts of `grains` (bodies from :func:`_grains`)."""
+    return [m for g in grains for m in _contactBodies(g)]
+
+
 def _grains(ids):
     """The bodies that move for `ids` (missing ones skipped; a clump given twice, or with its members, once), in
     the order given."""
@@ -65,20 +70,19 @@ def partners(ids):
     grains = _grains(ids)
     own = set(ids) | {g.id for g in grains}
     out = set()
-    for g in grains:
-        for b in _contactBodies(g):
-            for c in b.intrs():
-                if c.isReal:
-                    other = O.bodies[c.id2 if c.id1 == b.id else c.id1]
-                    if other is not None:
-                        out.add(_grain(other).id)
+    for b in _carriers(grains):
+        for c in b.intrs():
+            if c.isReal:
+                other = O.bodies[c.id2 if c.id1 == b.id else c.id1]
+                if other is not None:
+                    out.add(_grain(other).id)
     return sorted(out - own)
 
 
 def elastic(ids):
     """Elastic energy [J] stored in the real contacts of the bodies `ids` (of a clump: of its members)."""
     seen, e = set(), 0.0
-    for b in (m for g in _grains(ids) for m in _contactBodies(g)):
+    for b in _carriers(_grains(ids)):
         for c in b.intrs():
             key = (min(c.id1, c.id2), max(c.id1, c.id2))
             if not c.isReal or key in seen:
