@@ -164,7 +164,7 @@ def test_a_killed_run_resumed_after_a_jump_forgets_the_later_jumps_of_the_killed
     before it died (a row in jumps.csv, that jump's states on disk), goes on from that state: jumps.csv back to the
     state's jumps (and those taken since), the later jump's states gone, the run at its cycles."""
     from ballast.experiments.cyclic import JUMP_STATE
-    from test_box_experiment import killedCopy
+    from killed import killedCopy
     test, s = jumped
     jumps = pd.read_csv(os.path.join(test.out, 'jumps.csv'))
     folder = killedCopy(test, str(tmp_path), jumps.stateAfter.iloc[-1])

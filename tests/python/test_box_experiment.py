@@ -16,6 +16,7 @@ pytest.importorskip('yade')
 from ballast.experiments.box import BoxTest  # noqa: E402
 from ballast.experiments.box.zones import ZONES  # noqa: E402
 from ballast.params import ParamError  # noqa: E402
+from killed import killedCopy  # noqa: E402
 from yade import O  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
@@ -203,23 +204,6 @@ def test_a_long_run_killed_goes_on_from_its_last_state(run, tmp_path):
     pd.testing.assert_frame_equal(a.iloc[:2], b.iloc[:2])   # saved with the state
     assert b.settlement.iloc[2] == pytest.approx(a.settlement.iloc[2], rel=TOL_RESUME)
     assert b.resilient.iloc[2] == pytest.approx(a.resilient.iloc[2], rel=10 * TOL_RESUME)
-
-
-def killedCopy(test, results, state):
-    """The fixture's run copied to results/<run id> as a run killed after it saved `state`: run.json 'running'
-    with a process that is gone, no summary.json, no state-end."""
-    folder = os.path.join(results, test.runId)
-    shutil.copytree(test.out, folder)
-    for name in ('summary.json', 'state-end.yade.gz'):
-        os.remove(os.path.join(folder, name))
-    gone = subprocess.Popen(['true'])
-    gone.wait()
-    with open(os.path.join(folder, 'run.json')) as fh:
-        doc = json.load(fh)
-    doc.update(status='running', lastState=state, pid=gone.pid)
-    with open(os.path.join(folder, 'run.json'), 'w') as fh:
-        json.dump(doc, fh)
-    return folder
 
 
 def test_a_killed_run_resumed_goes_on_in_its_folder_to_its_end(run, tmp_path):

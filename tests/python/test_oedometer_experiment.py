@@ -20,12 +20,15 @@ yade = pytest.importorskip('yade')
 from ballast.oedometer import Oedometer  # noqa: E402
 from ballast.oedometer.loading import eq8  # noqa: E402
 from ballast.experiments.cyclic import COLUMNS as CYCLE_COLUMNS  # noqa: E402
+from ballast.params import ParamError  # noqa: E402
+from killed import killedCopy  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 DIAMETER, HEIGHT, SEGMENTS = 0.15, 0.08, 48   # [m], [m], [-]
 F_STRONG, F_WEAK, FMAX = 20.0, 50.0, 1.5e6   # [Hz], [Hz], [N]
 DENSITY = 2600.0                              # [kg/m^3] the default ballast density
 SMALL = dict(diameter=DIAMETER, height=HEIGHT, vMax=5, samples=1000, progress=60)
+WEAK = dict(SMALL, f=F_WEAK, ft0=5e5, strength=1.5e10, saveEvery=0.45, vtk=0.25)   # grains crush and abrade
 TIMEOUT = 300                                 # [s] the fresh yade process
 
 # tolerances, each with its reason
@@ -66,8 +69,8 @@ def strong(root):
 
 @pytest.fixture(scope='module')
 def weak(root, strong):
-    run = Oedometer(f=F_WEAK, ft0=5e5, strength=1.5e10, results=os.path.join(root, 'weak'), runId='weak',
-                    packingDir=os.path.join(root, 'packings'), saveEvery=0.45, vtk=0.25, **SMALL)
+    run = Oedometer(results=os.path.join(root, 'weak'), runId='weak', packingDir=os.path.join(root, 'packings'),
+                    **WEAK)
     run.run()
     return (run,) + files(run.out)
 
@@ -334,6 +337,41 @@ def test_state_saved_mid_cycle_continues_in_a_fresh_process(weak, root, tmp_path
     np.testing.assert_allclose(fd2[:, 1], fd[:, 1], rtol=0, atol=TOL_RESUME * FMAX)
     np.testing.assert_allclose(fd2[:, 2], fd[:, 2], rtol=0, atol=TOL_RESUME * s['deltaMax'])
     np.testing.assert_array_equal(fd2[:, 3:], fd[:, 3:])
+
+
+def test_a_killed_run_resumed_goes_on_in_its_folder_to_the_same_end(weak, root, tmp_path):
+    """resume: the run killed after its state at 90 % of the cycle goes on from it in its own folder (no new one), to
+    the end of its cycle: the same events and counters as the run that went on, fd.csv's rows before the state
+    exactly (saved with it) and after it to TOL_RESUME, not doubled (a row per sample period, times increasing), as
+    many VTK frames, run.json finished and naming the state it went on from."""
+    run, s, fd, events, _ = weak
+    mid = [f for f in s['stateFiles'] if f.startswith('state-iter')][1]
+    folder = killedCopy(run, str(tmp_path), mid)
+    s2 = Oedometer(results=str(tmp_path), runId=run.runId, packingDir=os.path.join(root, 'packings'), resume=True,
+                   **WEAK).run()
+    assert sorted(os.listdir(str(tmp_path))) == [run.runId] and s2['params']['resume'] is True
+    s2, fd2, events2, _ = files(folder)
+    assert events2 == events
+    for k in ('nCrushed', 'nAbraded', 'nSpheresFinal', 'nGrainsInitial'):
+        assert s2[k] == s[k], k
+    assert fd2.shape == fd.shape and (np.diff(fd2[:, 0]) > 0).all()
+    before = fd[:, 0] < 0.9 / F_WEAK - 1e-6
+    np.testing.assert_array_equal(fd2[before], fd[before])
+    np.testing.assert_allclose(fd2[:, 1], fd[:, 1], rtol=0, atol=TOL_RESUME * FMAX)
+    np.testing.assert_allclose(fd2[:, 2], fd[:, 2], rtol=0, atol=TOL_RESUME * s['deltaMax'])
+    with open(os.path.join(folder, 'run.json')) as fh:
+        doc = json.load(fh)
+    assert doc['status'] == 'finished' and doc['resumedFrom'] == mid
+    with open(os.path.join(folder, 'oedometer.pvd')) as a, open(os.path.join(run.out, 'oedometer.pvd')) as b:
+        assert a.read().count('<DataSet') == b.read().count('<DataSet') > 2
+
+
+def test_resume_needs_a_run_id_and_without_a_killed_run_starts_afresh(root, tmp_path):
+    with pytest.raises(ParamError, match="resume = True is not allowed: give runId"):
+        Oedometer(results=str(tmp_path), resume=True, **WEAK)
+    fresh = Oedometer(results=str(tmp_path), runId='none', packingDir=os.path.join(root, 'packings'), resume=True,
+                      **WEAK)
+    assert fresh.resumeKilled() is None and not os.path.exists(os.path.join(str(tmp_path), 'none'))
 
 
 # ------------------------------------------------------------------------------------ grading

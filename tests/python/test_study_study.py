@@ -176,7 +176,9 @@ def test_a_stopped_run_and_one_a_dead_runner_left_are_in_the_journal(setup, tmp_
         records = [json.loads(l) for l in fh]
     assert [(r['runId'], r['line'], r['status']) for r in records] == [(IDS[0], 2, 'started'), (IDS[0], 2, 'stopped')]
     assert records[0]['error'].endswith('its log ends: step 1200')
-    assert records[1]['error'] == 'stopped (the study was interrupted)'
+    # the oedometer declares resume: the stopped run, which saved a state, is kept for the row's next start
+    assert records[1]['error'] == 'stopped (the study was interrupted); kept to go on from its state-1.gz'
+    assert os.path.isfile(os.path.join(setup['out'], 'resume', IDS[0], 'run', 'state-1.gz'))
     assert statusRows(setup['out'])[IDS[0]]['status'] == 'stopped'
     assert os.listdir(os.path.join(setup['out'], 'work')) == []
 

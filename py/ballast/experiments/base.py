@@ -276,11 +276,12 @@ class Experiment:
         self.started, self.cpuStarted = time.time(), time.process_time()
 
     @classmethod
-    def fromScene(cls, readOnly=False, source=None, **overrides):
+    def fromScene(cls, readOnly=False, source=None, into=None, **overrides):
         """The experiment saved in the current scene, rebuilt (ballast.runtime.restore). It writes into a new
         run directory (<results>/<run id>-2, ... unless results or runId are given) when it first writes;
         readOnly=True: never (for inspecting a finished run). source: the state file it came from; run.json of the
-        run that goes on names it (continuesState) and the saved run's folder (continues)."""
+        run that goes on names it (continuesState) and the saved run's folder (continues). into: the folder of a
+        killed run that goes on (resumeKilled), written into from the start, before reopened() writes anything."""
         bad = sorted(k for k in overrides if k not in cls.REOPEN_PARAMS)
         if bad:
             raise TypeError('%s.reopen: %s cannot be changed in a saved run (only %s)' % (
@@ -297,6 +298,8 @@ class Experiment:
             exp.dir.previous = old.previous or old.path   # the saved run's folder (a restored one holds it as previous)
             runtime.unregister(old)
             exp.adopt()
+        if into is not None:
+            exp.dir.goOnIn(into)
         exp.dir.source = source
         exp.phases.progressSeconds = exp.p['progress']
         exp.reopened()
@@ -335,9 +338,8 @@ class Experiment:
                 self.Parameters.OWNER, folder, why))
         if why:
             self.say('resume: %s' % why)
-        exp = type(self).reopen(state, **{k: p[k] for k in self.REOPEN_PARAMS})
+        exp = type(self).reopen(state, into=folder, **{k: p[k] for k in self.REOPEN_PARAMS})
         self.requireSamePhysics(exp, 'resume (the killed run has other values)')
-        exp.dir.goOnIn(folder)
         exp.markRunning(resumedFrom=os.path.basename(state))
         exp.cutJumps()
         return exp.resumed(state)
@@ -366,7 +368,7 @@ class Experiment:
             timestep.enableDensityScaling()
 
     @classmethod
-    def reopen(cls, path, readOnly=False, **overrides):
+    def reopen(cls, path, readOnly=False, into=None, **overrides):
         """O.load(path) of a state saved by a run, and its experiment back (see fromScene)."""
         who = '%s.reopen' % cls.NAME
         checkStateFile(path, who)
@@ -383,4 +385,4 @@ class Experiment:
         if cls.persistentType not in saved and others:
             raise StateFileError('%s: %s is a state of another experiment (it holds a saved %s, not a %s)' % (
                 who, path, others[0], cls.persistentType))
-        return cls.fromScene(readOnly=readOnly, source=os.path.abspath(path), **overrides)
+        return cls.fromScene(readOnly=readOnly, source=os.path.abspath(path), into=into, **overrides)

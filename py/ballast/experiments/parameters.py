@@ -246,6 +246,12 @@ CONTINUE_FROM = Param('', 'path', 'a state a run of this experiment saved (state
                       'from it for `cycles` more cycles, into this run\'s folder (a long run in slices; the physics '
                       'must be the saved run\'s: a difference is refused, naming the parameter)', anyText, 'a path', text)
 
+# a killed run taken on in its own folder (Experiment.resumeKilled); an experiment that declares it says so in its
+# declaration's sets, and a study then keeps a killed row's folder to hand back
+RESUME = Param(False, '-', 'go on with the run killed in <results>/<runId> (run.json "running") from the last state it '
+               'saved (every saveEvery cycles, and one as loading starts), in its folder, to the end it was going to; '
+               'with no such run, start afresh (docs/box.md, "A killed run goes on")', boolean, '0 or 1', flag)
+
 
 class ExperimentParameters(Parameters):
     """An experiment's checked parameters (the GRAINS, INTEGRATION and crushing ones at least): the time steps
@@ -358,6 +364,11 @@ class ExperimentParameters(Parameters):
         if self['rollingFriction'] > 0 and self['law'] != 'linear':
             self.bad('rollingFriction', "needs law = 'linear' (YADE's moment law on the linear contact), got law = %r"
                      % self['law'])
+
+    def checkResume(self):
+        """resume names the run that goes on by its folder: runId must be given."""
+        if self.get('resume') and not self['runId']:
+            self.bad('resume', 'give runId: the run that goes on is the one in <results>/<runId>')
 
     def checkGrainCount(self, volume, name):
         """A sample of `volume` [m^3] at its layers' solidFraction holds at most MAX_GRAINS grains of [dMin, dMax]

@@ -9,7 +9,8 @@ import os
 from ...params import NUMBER_NONNEGATIVE, NUMBER_POSITIVE, Param, anyText, between, boolean, flag, intBetween, nonNegative, \
     positive, positiveInt, text
 from ..parameters import (CONTACT, CONTINUE_FROM, CYCLE_JUMP, ENGINES, GRAIN, GRAINS, INTEGRATION, PHI, PREPARATION,
-                          RUN, SEED, STEEL, CYCLE_OUTPUTS, QUASI_STATIC, ExperimentParameters, grainKey, storeName, take)
+                          RESUME, RUN, SEED, STEEL, CYCLE_OUTPUTS, QUASI_STATIC, ExperimentParameters, grainKey,
+                          storeName, take)
 from ..loadhistory import LoadHistory
 
 OWNER = 'BoxTest'
@@ -61,9 +62,7 @@ PARAMS = {
         "0: none, the paper's spheres", "0: none, the paper's spheres (which let the sleeper punch in); 0.3 by default "
         "here")),
     'continueFrom': CONTINUE_FROM,
-    'resume': Param(False, '-', 'go on with the run killed in <results>/<runId> (run.json "running") from the last state '
-                    'it saved (saveEvery), in its folder, to the end it was going to; with no such run, start afresh '
-                    '(docs/box.md, "A killed run goes on")', boolean, '0 or 1', flag),
+    'resume': RESUME,
     **GRAINS,
     **GRAIN,
     **take(STEEL, 'steelYoungRatio', 'steelPoisson', 'steelDensity'),
@@ -133,8 +132,7 @@ class BoxParameters(ExperimentParameters):
             bad('sleeperGap', 'leaves no sleeper in a box of width %g m' % p['boxWidth'])
         if not p['loadFile'] and p['seatLoad'] >= p['peakLoad']:
             bad('seatLoad', 'must be smaller than peakLoad = %g N' % p['peakLoad'])
-        if p['resume'] and not p['runId']:
-            bad('resume', 'give runId: the run that goes on is the one in <results>/<runId>')
+        self.checkResume()
         if p['continueFrom'] and not os.path.isfile(p['continueFrom']):
             bad('continueFrom', 'no such state file')
         if p['loadFile']:

@@ -36,7 +36,7 @@ BOUNDS = [
 DECLARATION = Declaration(
     name='oedometer', owner=OWNER, params=PARAMS, bounds=BOUNDS,
     title='The oedometer (`Oedometer(...)`, `--name value`, table columns)', check=check, script='scripts/oedometer.py',
-    sets={'results': 'results', 'runId': 'runId', 'sampleStore': 'packingDir'},
+    sets={'results': 'results', 'runId': 'runId', 'sampleStore': 'packingDir', 'resume': 'resume'},
     sampleKey=lambda p: packingKey(p)[1],
     cost=lambda p: p['cycles'] / p['f'],          # simulated loading time [s]: the highest f builds the packing
     recordTimes=lambda p: [halfLoadTime(p['f'])],  # the two checks around Fmax/2 (stressRatioAtHalfLoad)

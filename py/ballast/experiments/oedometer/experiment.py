@@ -58,7 +58,7 @@ class Oedometer(Cyclic, Experiment):
     NAME = 'oedometer'
     Parameters = OedometerParameters
     # parameters a reopened run may change: where and how it reports, not the physics
-    REOPEN_PARAMS = ('results', 'runId', 'progress', 'vtk', 'saveEvery', 'timing', 'cycles') + tuple(CYCLE_JUMP)
+    REOPEN_PARAMS = ('results', 'runId', 'progress', 'vtk', 'saveEvery', 'timing', 'cycles', 'resume') + tuple(CYCLE_JUMP)
 
     def __init__(self, packing=None, load=None, outputs=None, parameters=None, **params):
         self.packing = packing if packing is not None else StoredPacking()
@@ -357,11 +357,20 @@ class Oedometer(Cyclic, Experiment):
 
     def reopened(self):
         self.restored()
-        if not self.dir.readOnly:
+        if not self.dir.readOnly and not self.dir.resumed:   # a resumed run is marked once its physics is checked
             self.dir.create()
             self.markRunning(continues=self.dir.previous, continuesState=self.dir.source, fromIter=O.iter)
         self.say('reopened %s at t = %.6f s (loading time %.6f s) -> %s' % (
             self.dir.wanted, O.time, O.time - self.loading.t0, self.out or 'read only, no run directory'))
+
+    def resumed(self, state):
+        """Experiment.resumeKilled's last step: this run, reopened from `state` in the folder of its killed process,
+        loads on to the cycles it was going to (fd.csv, the check log and the frames are written again from the rows
+        saved with the state, so the rows after it are taken again, not doubled)."""
+        self.say('resume: run %s goes on in %s from %s (loading time %.6f s of %.6f s)' % (
+            self.runId, self.out, os.path.basename(state), O.time - self.loading.t0,
+            (self.p['cycles'] - self.cyclesJumped()) * self.T))
+        return self.load()
 
     @classmethod
     def rebuild(cls, runDir, **overrides):

@@ -13,7 +13,7 @@ from ... import _ballast
 from ...geometry import frictPhysStiffness
 from ...params import NUMBER_NONNEGATIVE, NUMBER_POSITIVE, Param, anyText, between, boolean, choice, flag, intAtLeast, \
     nonNegative, positive, positiveInt, text
-from ..parameters import (CONTACT, CYCLE_JUMP, ENGINES, GRAIN, GRAINS, INTEGRATION, PREPARATION, RUN, SEED, STEEL,
+from ..parameters import (CONTACT, CYCLE_JUMP, ENGINES, GRAIN, GRAINS, INTEGRATION, PREPARATION, RESUME, RUN, SEED, STEEL,
                           CYCLE_OUTPUTS, MAX_OVERLAP_RATIO, QUASI_STATIC, ExperimentParameters, grainKey, storeName, take)
 from .loadcurve import halfLoadTime, peakTime
 
@@ -87,6 +87,7 @@ PARAMS = {
     **take(RUN, 'progress'),
     'timing': Param(False, '-', 'time every engine while loading (O.timingEnabled) and write timing.txt', boolean,
                     '0 or 1', flag),
+    'resume': RESUME,
     **CYCLE_JUMP,
     **CYCLE_OUTPUTS,
     **QUASI_STATIC,
@@ -143,6 +144,7 @@ class OedometerParameters(ExperimentParameters):
         self.checkBed()
         self.checkDensityStep()
         self.checkCycleJump()
+        self.checkResume()
         # f is named for a run too long as well: raise f or lower cycles
         self.checkCycles(self.T, 'f', 'f')
         u = self.singleContactOverlap(p['Fmax'])
