@@ -118,7 +118,6 @@ class RunDirectory:
         self.results, self.wanted, self.readOnly = results, runId, readOnly
         self.runId = self.path = self.previous = None
         self.source = None   # the state file a reopened run goes on from (its provenance in run.json)
-        self.resumed = False  # goOnIn: this run is a killed one going on in its own folder (not saved: a restore's is new)
 
     def create(self):
         """The folder's path, made now if it is not yet."""
@@ -145,7 +144,7 @@ class RunDirectory:
 
     def goOnIn(self, path):
         """A killed run that goes on (Experiment.resumeKilled) writes into its own folder, not a new one."""
-        self.path, self.runId, self.resumed = path, os.path.basename(path), True
+        self.path, self.runId = path, os.path.basename(path)
 
     def writeStatus(self, status, **info):
         """run.json: the status ('running', 'finished') and what else the experiment says, written atomically."""

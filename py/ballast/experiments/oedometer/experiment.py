@@ -357,7 +357,8 @@ class Oedometer(Cyclic, Experiment):
 
     def reopened(self):
         self.restored()
-        if not self.dir.readOnly and not self.dir.resumed:   # a resumed run is marked once its physics is checked
+        # a folder already there is a killed run's own (resumeKilled's into=): it is marked once its physics is checked
+        if not self.dir.readOnly and self.dir.path is None:
             self.dir.create()
             self.markRunning(continues=self.dir.previous, continuesState=self.dir.source, fromIter=O.iter)
         self.say('reopened %s at t = %.6f s (loading time %.6f s) -> %s' % (
